@@ -1,0 +1,24 @@
+add_library(molmesh_warnings INTERFACE)
+target_compile_options(molmesh_warnings INTERFACE
+  $<$<CXX_COMPILER_ID:GNU,Clang>:-Wall -Wextra -Wpedantic -Wshadow -Wconversion -Wno-sign-conversion>)
+
+# Adds one static library per pipeline stage from the sources in its folder, so each
+# stage is usable alone and a newcomer finds it by folder name.
+function(molmesh_stage_library name folder)
+  file(GLOB _sources CONFIGURE_DEPENDS ${folder}/*.cpp)
+  if(NOT _sources)
+    # A stage whose code is all in headers (or not written yet) still gets a real archive.
+    set(_empty ${CMAKE_CURRENT_BINARY_DIR}/molmesh_${name}_empty.cpp)
+    file(WRITE ${_empty} "// generated: stage ${name} has no compiled sources\n")
+    set(_sources ${_empty})
+  endif()
+  add_library(molmesh_${name} STATIC ${_sources})
+  add_library(molmesh::${name} ALIAS molmesh_${name})
+  set_target_properties(molmesh_${name} PROPERTIES POSITION_INDEPENDENT_CODE ON EXPORT_NAME ${name})
+  target_include_directories(molmesh_${name} PUBLIC
+    $<BUILD_INTERFACE:${PROJECT_SOURCE_DIR}/lib>
+    $<BUILD_INTERFACE:${PROJECT_SOURCE_DIR}>
+    $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>)
+  target_link_libraries(molmesh_${name} PRIVATE $<BUILD_INTERFACE:molmesh_warnings>)
+  set_property(GLOBAL APPEND PROPERTY MOLMESH_EXPORTED_TARGETS molmesh_${name})
+endfunction()

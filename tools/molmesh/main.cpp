@@ -1,0 +1,42 @@
+// molmesh: molecules to simulation-ready meshes. Subcommands register themselves
+// (command_registry.hpp); this file only parses, dispatches and maps errors to exit codes.
+#include <CLI/CLI.hpp>
+#include <cstdio>
+#include <exception>
+
+#include "cli_context.hpp"
+#include "command_registry.hpp"
+#include "molmesh/core/error.hpp"
+
+int main(int argc, char** argv) {
+  using namespace molmesh::cli;
+  CLI::App app{"molmesh: molecules to adaptive surface and tetrahedral meshes (GAMer method)"};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", "molmesh 0.1.0");
+  app.fallthrough();  // lets --quiet appear after the subcommand too
+  CliContext ctx;
+  app.add_flag("-q,--quiet", ctx.quiet, "Do not show progress")->configurable(false);
+  for (const auto& command : registered_commands()) command.add(app, ctx);
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e) == 0 ? kSuccess : kUsage;
+  } catch (const molmesh::InputError& e) {
+    std::fprintf(stderr, "molmesh: error: %s\n", e.what());
+    return kInputError;
+  } catch (const molmesh::OutputError& e) {
+    std::fprintf(stderr, "molmesh: error: %s\n", e.what());
+    return kOutputError;
+  } catch (const molmesh::Error& e) {
+    std::fprintf(stderr, "molmesh: error: %s\n", e.what());
+    return kFailure;
+  } catch (const std::bad_alloc&) {
+    std::fprintf(stderr, "molmesh: error: out of memory (try a coarser --spacing)\n");
+    return kFailure;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "molmesh: internal error: %s (please report this)\n", e.what());
+    return kInternal;
+  }
+  return kSuccess;
+}
