@@ -9,4 +9,11 @@ using Vec3 = Eigen::Vector3d;
 using Triangle = std::array<int, 3>;     // vertex indices, counter-clockwise seen from outside
 using Tetrahedron = std::array<int, 4>;  // vertex indices, positive orientation
 
+// A ball in space: keep-spheres that forbid coarsening, active-site spheres for markers.
+struct Sphere {
+  Vec3 center = Vec3::Zero();
+  double radius = 0.0;
+  bool contains(const Vec3& p) const { return (p - center).squaredNorm() <= radius * radius; }
+};
+
 }  // namespace molmesh
