@@ -1,0 +1,19 @@
+#pragma once
+// Marker values shared by the mesher, the writers, the hierarchy and the solvers. The
+// table and its translation to MCSF boundary types is documented in docs/formats.md.
+
+namespace molmesh::markers {
+
+// Region (cell) markers.
+inline constexpr int kMoleculeRegion = 1;
+inline constexpr int kSolventRegion = 2;
+
+// Boundary-face markers (TetMesh::boundary_face_markers, SurfaceMesh::face_markers) and
+// vertex markers (0 = not on a marked boundary). A face lies in the active site when all
+// three of its vertices are inside the union of the active-site spheres.
+inline constexpr int kNoMarker = 0;
+inline constexpr int kMolecularSurface = 1;
+inline constexpr int kOuterSphere = 2;
+inline constexpr int kActiveSite = 3;
+
+}  // namespace molmesh::markers
