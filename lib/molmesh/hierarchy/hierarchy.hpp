@@ -22,6 +22,9 @@ struct HierarchyLevel {
   // came from; empty for level 0.
   std::vector<int> surface_provenance;
   TetMesh volume;
+  // Locality renumbering (reverse Cuthill-McKee) applied to `volume`:
+  // volume_permutation[new index] = vertex index in the mesher's output. Empty = identity.
+  std::vector<int> volume_permutation;
 };
 
 // Prolongation from level `coarse` to level `fine` = coarse - 1. Invariants (tested):
