@@ -1,0 +1,65 @@
+#pragma once
+// Tetrahedral meshing of a molecular surface with TetGen (GAMer §2.4): the molecule's
+// interior (every atom centre a mesh node), the solvent between the surface and a large
+// outer sphere, or both in one conforming mesh. The molecular surface is kept exactly as
+// given (no Steiner points on it), so the surface pipeline's quality carries over.
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "molmesh/atoms/atom.hpp"
+#include "molmesh/core/geometry.hpp"
+#include "molmesh/core/reporter.hpp"
+#include "molmesh/surface/surface_mesh.hpp"
+#include "molmesh/tetmesh/tet_mesh.hpp"
+
+namespace molmesh {
+
+enum class Domain { interior, exterior, full };
+
+struct TetMeshOptions {
+  Domain domain = Domain::full;
+  // Outer sphere radius = sphere_ratio × molecule size (max distance of atom centres from
+  // their mean; of surface points when there are no atoms). 40 as in the paper.
+  double sphere_ratio = 40.0;
+  std::optional<double> outer_radius;  // Å; overrides sphere_ratio
+  // Outer-sphere triangulation: icosphere subdivision level (level L has 10·4^L + 2
+  // vertices). Its triangles are large (∝ radius), so the far field stays coarse.
+  int outer_sphere_subdivisions = 3;
+  // Molecular-surface faces whose three vertices lie inside the union get kActiveSite.
+  std::vector<Sphere> active_site;
+  // TetGen -q bounds: the radius-edge ratio bound drives Delaunay refinement (and the
+  // outward grading); the dihedral bound is enforced by TetGen's optimisation.
+  double max_radius_edge_ratio = 2.0;
+  double min_dihedral_deg = 10.0;
+  std::optional<double> max_volume;  // Å³, TetGen -a (uniform upper bound)
+  // Expert override: replaces every switch molmesh would choose (besides Q, which is
+  // always added so TetGen stays silent). Must keep the meaning of the result a PLC mesh
+  // with region attributes, e.g. "pq1.5/15YA".
+  std::string tetgen_switches;
+};
+
+struct TetMeshReport {
+  std::size_t atoms_given = 0;        // atoms passed in
+  std::size_t atoms_as_nodes = 0;     // distinct atom centres that are mesh vertices
+  std::size_t coincident_atoms = 0;   // atoms whose centre duplicates an earlier one
+  std::size_t atoms_outside = 0;      // centres outside the meshed interior (not nodes)
+  std::size_t surface_vertices = 0;   // molecular-surface vertices given
+  std::size_t surface_steiner_points = 0;  // vertices TetGen added on the surface (0 with Y)
+  std::size_t outer_sphere_vertices = 0;
+  double molecule_size = 0.0;         // Å
+  double outer_radius = 0.0;          // Å (0 for an interior mesh)
+  std::string tetgen_switches;        // the switches TetGen ran with
+  double seconds = 0.0;               // TetGen wall time
+  double total_seconds = 0.0;         // including input preparation and classification
+};
+
+// Throws molmesh::Error when the surface is empty or not closed enough for TetGen, when the
+// outer sphere would not enclose the surface, or when TetGen fails (its error code is
+// translated into a message). `atoms` may be empty (surface-file inputs).
+TetMesh tetrahedralize(const SurfaceMesh& molecular_surface, const Atoms& atoms,
+                       const TetMeshOptions& options, const Reporter& reporter = {},
+                       TetMeshReport* report = nullptr);
+
+}  // namespace molmesh
