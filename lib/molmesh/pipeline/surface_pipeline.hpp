@@ -1,0 +1,45 @@
+#pragma once
+// Stage 2.1 as the CLI runs it: atoms (or a volume) -> Gaussian blur -> marching cubes ->
+// optional removal of small cavities -> surface processing (unless raw). Each stage is timed
+// and, for surfaces, measured.
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "molmesh/atoms/atom.hpp"
+#include "molmesh/core/reporter.hpp"
+#include "molmesh/surface/surface_mesh.hpp"
+#include "molmesh/surface/surface_stats.hpp"
+#include "molmesh/volume/gaussian_blur.hpp"
+#include "molmesh/volume/grid.hpp"
+
+namespace molmesh {
+
+struct SurfacePipelineOptions {
+  BlurOptions blur;  // blur.isovalue is overwritten with `isovalue` below
+  double isovalue = 1.0;
+  double min_cavity_volume = 0.0;  // Å³; cavities enclosing less are dropped; 0 keeps all
+  bool raw = false;                // stop after marching cubes (and cavity removal)
+  // Processing options (quality improvement, coarsening, smoothing) go here.
+};
+
+struct StageRecord {
+  std::string name;  // "blur", "marching cubes", "cavities", ...
+  double seconds = 0.0;
+  std::optional<SurfaceStats> stats;  // of the surface this stage produced, if any
+};
+
+struct SurfacePipelineResult {
+  SurfaceMesh raw;      // marching cubes output (after cavity removal)
+  SurfaceMesh surface;  // final surface (== raw when options.raw)
+  std::vector<StageRecord> stages;
+  std::array<int, 3> grid_dims{0, 0, 0};  // the blurred volume's size (0 for volume input)
+};
+
+SurfacePipelineResult surface_from_atoms(const Atoms& atoms, const SurfacePipelineOptions& options,
+                                         const Reporter& reporter = {});
+SurfacePipelineResult surface_from_grid(const Grid& grid, const SurfacePipelineOptions& options,
+                                        const Reporter& reporter = {});
+
+}  // namespace molmesh

@@ -1,0 +1,35 @@
+#pragma once
+// Eq. 1 of the GAMer paper: F(x) = sum_i exp(B_i (|x - c_i|^2 / r_i^2 - 1)), sampled on a
+// regular grid that encloses the isosurface F = isovalue with a margin. F is large inside
+// the molecule and decreases outward. Decisions (cutoff, error bound, margin) are in
+// docs/surface.md.
+#include "molmesh/atoms/atom.hpp"
+#include "molmesh/core/reporter.hpp"
+#include "molmesh/volume/grid.hpp"
+
+namespace molmesh {
+
+struct BlurOptions {
+  double spacing = 0.5;      // Å, same along x, y, z
+  double blobbyness = -0.5;  // global B (< 0), used when Atom::blobbyness is unset
+  double isovalue = 1.0;     // the level the surface will be extracted at; sizes the margin
+  // Each atom's kernel is cut off where it falls below truncation * isovalue, i.e. at
+  // distance r * sqrt(1 + ln(truncation * isovalue) / B). Beyond that it adds nothing.
+  double truncation = 1e-4;
+  // Whole grid cells added beyond the farthest point where any lone atom reaches the
+  // isovalue. The grid is enlarged automatically if the blurred field still reaches the
+  // isovalue on its boundary (many overlapping tails), so the surface is always closed.
+  int margin_cells = 3;
+};
+
+// Atoms with zero radius add nothing. Throws Error for non-negative blobbyness, a
+// non-positive spacing/isovalue/truncation, no atom with a positive radius, or a grid too
+// large to allocate (the message gives its size). Deterministic: the sum at each grid point
+// runs over atoms in input order whatever the number of threads.
+Grid blur_atoms(const Atoms& atoms, const BlurOptions& options, const Reporter& reporter = {});
+
+// The distance from an atom's centre at which its kernel equals `value` (> 0), or 0 when
+// it never reaches it. Exposed for the margin logic and for tests.
+double kernel_radius(double radius, double blobbyness, double value);
+
+}  // namespace molmesh
