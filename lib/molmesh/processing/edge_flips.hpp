@@ -3,6 +3,8 @@
 // swapping as the second quality tool). A flip is only done where the two triangles are
 // nearly coplanar, so the surface shape, and thus the molecule, is not changed.
 #include <cstddef>
+#include <cstdint>
+#include <span>
 
 #include "molmesh/processing/halfedge_mesh.hpp"
 #include "molmesh/surface/surface_mesh.hpp"
@@ -24,18 +26,25 @@ struct FlipOptions {
 // Flips every edge whose flip raises the minimum angle of its two triangles, subject to the
 // ridge test and the topology rules (no duplicate edge, valence >= 3, manifold). Sweeps
 // edges in index order, so the result is deterministic. Returns the number of flips done.
-// Vertex positions and indices are unchanged; triangles are rewritten.
+// Vertex positions and indices are unchanged; triangles are rewritten. Throws
+// molmesh::Error if the mesh is not a closed oriented manifold. `frozen` (empty, or one flag
+// per vertex): no flip changes the star of a frozen vertex.
 std::size_t flip_edges_for_angles(SurfaceMesh& mesh, const FlipOptions& options = {});
-std::size_t flip_edges_for_angles(HalfedgeMesh& mesh, const FlipOptions& options = {});
+std::size_t flip_edges_for_angles(HalfedgeMesh& mesh, const FlipOptions& options = {},
+                                  std::span<const std::uint8_t> frozen = {});
 
-// Flips edges that bring the valences of the four vertices involved closer to 6 (sum of
-// squared deviations decreases) when the flip does not lower the minimum angle of the pair
-// below `min_angle_deg` (nor below what it was) and passes the same ridge and topology
-// tests. Valence near 6 is what lets vertex relocation reach ~60° angles.
+// Flips edges that bring the valences of the four vertices involved closer to 6 (the sum
+// of squared deviations from 6 decreases), when the flip passes the ridge and topology
+// tests and the smaller minimum angle of the pair after the flip is at least
+// min(min_angle_deg, what it was before). Valence near 6 is what lets the vertex
+// relocation of quality improvement reach ~60° angles.
 std::size_t flip_edges_for_valence(HalfedgeMesh& mesh, const FlipOptions& options = {},
-                                   double min_angle_deg = 25.0);
+                                   double min_angle_deg = 30.0,
+                                   std::span<const std::uint8_t> frozen = {});
 
-// Flip gate shared by both strategies: topologically legal and not across a ridge.
+// The gate shared by both strategies: the flip of the edge of halfedge h is topologically
+// legal and both the old and the new pair of triangles bend by at most max_dihedral_deg
+// (and the new pair does not fold over the old one).
 bool flip_is_geometrically_safe(const HalfedgeMesh& mesh, int h, double max_dihedral_deg);
 
 }  // namespace molmesh

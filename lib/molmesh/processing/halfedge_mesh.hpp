@@ -104,8 +104,6 @@ class HalfedgeMesh {
   Compacted to_surface_mesh() const;
 
  private:
-  void link_new_faces(std::span<const int> slots);
-
   std::vector<Vec3> positions_;
   std::vector<int> out_;   // per vertex; kInvalid marks a removed vertex
   std::vector<int> head_;  // per halfedge

@@ -30,8 +30,11 @@ VertexAdjacency vertex_faces(const SurfaceMesh& mesh);
 // vertices alone. Deterministic: starts at the neighbour of the lowest-index face.
 VertexAdjacency ordered_one_rings(const SurfaceMesh& mesh, const VertexAdjacency& faces);
 
+// Neighbours of each vertex (sharing an edge), sorted, also for non-manifold vertices.
+VertexAdjacency vertex_neighbours(const SurfaceMesh& mesh, const VertexAdjacency& faces);
+
 // Vertices within `rings` edges of each vertex (the vertex itself first, then by
 // increasing distance in edges, ties in increasing index). rings >= 1.
-VertexAdjacency k_rings(const SurfaceMesh& mesh, const VertexAdjacency& one_rings, int rings);
+VertexAdjacency k_rings(const SurfaceMesh& mesh, const VertexAdjacency& neighbours, int rings);
 
 }  // namespace molmesh

@@ -1,0 +1,478 @@
+#include "molmesh/processing/coarsen.hpp"
+
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <string>
+
+#include "molmesh/core/error.hpp"
+#include "molmesh/processing/edge_flips.hpp"
+#include "molmesh/processing/halfedge_mesh.hpp"
+#include "molmesh/processing/structure_tensor.hpp"
+
+namespace molmesh {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+// Larger holes are left alone: they only occur at badly shaped vertices that quality
+// improvement should fix first, and the O(M^3) triangulation search stays bounded.
+constexpr int kMaxHoleValence = 24;
+// New triangles may tilt at most this far from the removed fan's mean normal.
+const double kCosMaxTilt = std::cos(60.0 * std::numbers::pi / 180.0);
+// Triangles thinner than this are degenerate for our purposes.
+const double kMinTriangleAngle = 1.0 * std::numbers::pi / 180.0;
+
+// Angle-weighted unit vertex normals, as vertex_normals.hpp defines them, computed on the
+// editable mesh so that passes need no conversion to a plain mesh.
+void compute_vertex_normals(const HalfedgeMesh& mesh, std::vector<Vec3>& normals) {
+  normals.assign(static_cast<std::size_t>(mesh.vertex_capacity()), Vec3::Zero());
+  tbb::parallel_for(0, mesh.vertex_capacity(), [&](int v) {
+    if (!mesh.vertex_alive(v)) return;
+    Vec3 sum = Vec3::Zero();
+    const Vec3& x = mesh.position(v);
+    const int h0 = mesh.outgoing(v);
+    int h = h0;
+    do {
+      const Vec3 e1 = mesh.position(mesh.head(h)) - x;
+      const Vec3 e2 = mesh.position(mesh.head(HalfedgeMesh::next(h))) - x;
+      const Vec3 n = e1.cross(e2);
+      const double len = n.norm();
+      if (len > 0) sum += std::atan2(len, e1.dot(e2)) * (n / len);
+      h = mesh.rotate_ccw(h);
+    } while (h != h0);
+    const double len = sum.norm();
+    if (len > 0) normals[v] = sum / len;
+  });
+}
+
+struct Scratch {
+  RingScratch rings;
+  std::vector<int> verts;
+  std::vector<Vec3> normals;
+  // hole planning
+  std::vector<int> ring, fan, around, valence;
+  std::vector<Vec3> p3;
+  std::vector<Eigen::Vector2d> p2;
+  std::vector<std::uint8_t> edge;  // k*k: ring vertices i, j already adjacent
+  std::vector<double> best_min, best_sum;
+  std::vector<int> choice;
+  std::vector<Triangle> local;  // chosen triangles in ring indices
+};
+
+double orient3d(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
+  return (b - a).cross(c - a).dot(d - a);
+}
+
+// Proper crossing of segment pq through the interior of triangle abc. Touching and
+// coplanar contacts do not count: shared vertices and edges are handled by the caller.
+bool segment_crosses_triangle(const Vec3& p, const Vec3& q, const Vec3& a, const Vec3& b,
+                              const Vec3& c) {
+  const double dp = orient3d(a, b, c, p);
+  const double dq = orient3d(a, b, c, q);
+  if ((dp > 0 && dq > 0) || (dp < 0 && dq < 0) || dp == dq) return false;
+  const double s1 = orient3d(p, q, a, b);
+  const double s2 = orient3d(p, q, b, c);
+  const double s3 = orient3d(p, q, c, a);
+  return (s1 > 0 && s2 > 0 && s3 > 0) || (s1 < 0 && s2 < 0 && s3 < 0);
+}
+
+// Do two triangles (given by vertex ids) intersect other than along what they share?
+bool triangles_clash(const HalfedgeMesh& mesh, const Triangle& s, const Triangle& t) {
+  int shared = 0;
+  for (int i = 0; i < 3; ++i) {
+    const bool in_t = s[i] == t[0] || s[i] == t[1] || s[i] == t[2];
+    shared += in_t ? 1 : 0;
+  }
+  auto P = [&](int v) -> const Vec3& { return mesh.position(v); };
+  if (shared >= 2) return false;  // edge-adjacent pairs are checked by the fold test
+  if (shared == 1) {
+    // Only the edges opposite the shared vertex can cross the other triangle.
+    int common = -1;
+    for (int i = 0; i < 3; ++i) {
+      if (s[i] == t[0] || s[i] == t[1] || s[i] == t[2]) common = s[i];
+    }
+    auto opposite = [&](const Triangle& x, int& a, int& b) {
+      const int i = x[0] == common ? 0 : (x[1] == common ? 1 : 2);
+      a = x[(i + 1) % 3];
+      b = x[(i + 2) % 3];
+    };
+    int a, b;
+    opposite(s, a, b);
+    if (segment_crosses_triangle(P(a), P(b), P(t[0]), P(t[1]), P(t[2]))) return true;
+    opposite(t, a, b);
+    return segment_crosses_triangle(P(a), P(b), P(s[0]), P(s[1]), P(s[2]));
+  }
+  for (int i = 0; i < 3; ++i) {
+    if (segment_crosses_triangle(P(s[i]), P(s[(i + 1) % 3]), P(t[0]), P(t[1]), P(t[2])))
+      return true;
+    if (segment_crosses_triangle(P(t[i]), P(t[(i + 1) % 3]), P(s[0]), P(s[1]), P(s[2])))
+      return true;
+  }
+  return false;
+}
+
+double triangle_min_angle(const Vec3& a, const Vec3& b, const Vec3& c) {
+  auto angle = [](const Vec3& p, const Vec3& q, const Vec3& r) {
+    const Vec3 u = q - p;
+    const Vec3 w = r - p;
+    return std::atan2(u.cross(w).norm(), u.dot(w));
+  };
+  return std::min({angle(a, b, c), angle(b, c, a), angle(c, a, b)});
+}
+
+// Chooses how to fill the hole left by deleting v, or returns false if no safe filling
+// exists. Read-only on the mesh. The triangulation maximises the smallest angle (ties: the
+// larger sum of minimum angles) over all triangulations of the ring polygon whose
+// triangles are (1) not degenerate, (2) positively oriented when projected on the fan's
+// tangent plane and tilted by at most 60° from it (no fold-over), (3) free of edges that
+// already exist elsewhere, and (4) leave every ring vertex at least 3 neighbours. The
+// chosen triangles must then not cross any face of the surrounding ring of faces, nor
+// fold onto their outer neighbours.
+bool plan_removal(const HalfedgeMesh& mesh, int v, Scratch& s, std::vector<Triangle>& out) {
+  out.clear();
+  mesh.one_ring(v, s.ring);
+  mesh.incident_faces(v, s.fan);
+  const int k = static_cast<int>(s.ring.size());
+  if (k < 3 || k > kMaxHoleValence) return false;
+
+  Vec3 normal = Vec3::Zero();
+  for (int f : s.fan) normal += mesh.face_area_vector(f);
+  const double normal_len = normal.norm();
+  if (!(normal_len > 0)) return false;
+  normal /= normal_len;
+  const Vec3 t1 = normal.unitOrthogonal();
+  const Vec3 t2 = normal.cross(t1);
+  const Vec3& x = mesh.position(v);
+  s.p3.resize(k);
+  s.p2.resize(k);
+  double scale = 0;
+  for (int i = 0; i < k; ++i) {
+    s.p3[i] = mesh.position(s.ring[i]);
+    const Vec3 d = s.p3[i] - x;
+    s.p2[i] = {d.dot(t1), d.dot(t2)};
+    scale = std::max(scale, d.squaredNorm());
+  }
+  // The projected ring must wind once, positively, around x (star-shaped polygon);
+  // otherwise the vertex sits in a fold and the projection cannot guide the filling.
+  double winding = 0;
+  for (int i = 0; i < k; ++i) {
+    const Eigen::Vector2d& a = s.p2[i];
+    const Eigen::Vector2d& b = s.p2[(i + 1) % k];
+    const double cross = a.x() * b.y() - a.y() * b.x();
+    if (!(cross > 1e-12 * scale)) return false;
+    winding += std::atan2(cross, a.dot(b));
+  }
+  if (std::abs(winding - 2 * std::numbers::pi) > 1e-6) return false;
+
+  s.valence.resize(k);
+  s.edge.assign(static_cast<std::size_t>(k * k), 0);
+  for (int i = 0; i < k; ++i) {
+    const int r = s.ring[i];
+    int count = 0;
+    const int h0 = mesh.outgoing(r);
+    int h = h0;
+    do {
+      ++count;
+      const int w = mesh.head(h);
+      for (int j = 0; j < k; ++j) {
+        if (s.ring[j] == w) s.edge[i * k + j] = 1;
+      }
+      h = mesh.rotate_ccw(h);
+    } while (h != h0);
+    s.valence[i] = count;
+  }
+  auto is_polygon_side = [&](int a, int b) { return b - a == 1 || (a == 0 && b == k - 1); };
+  auto score = [&](int i, int m, int j) {
+    // Diagonals must be new edges.
+    if (!is_polygon_side(i, m) && s.edge[i * k + m]) return -1.0;
+    if (!is_polygon_side(m, j) && s.edge[m * k + j]) return -1.0;
+    if (!is_polygon_side(i, j) && s.edge[i * k + j]) return -1.0;
+    // An ear at a ring vertex gives it no new edge; it loses the edge to v.
+    int ear = -1;
+    if (m == i + 1 && j == m + 1) ear = m;
+    if (i == 0 && m == 1 && j == k - 1) ear = 0;
+    if (i == 0 && m == k - 2 && j == k - 1) ear = k - 1;
+    if (ear >= 0 && s.valence[ear] <= 3) return -1.0;
+    const Eigen::Vector2d& a = s.p2[i];
+    const Eigen::Vector2d& b = s.p2[m];
+    const Eigen::Vector2d& c = s.p2[j];
+    const double area2 = (b - a).x() * (c - a).y() - (b - a).y() * (c - a).x();
+    if (!(area2 > 1e-9 * scale)) return -1.0;
+    const Vec3 n = (s.p3[m] - s.p3[i]).cross(s.p3[j] - s.p3[i]);
+    if (n.dot(normal) < kCosMaxTilt * n.norm()) return -1.0;
+    const double angle = triangle_min_angle(s.p3[i], s.p3[m], s.p3[j]);
+    if (angle < kMinTriangleAngle) return -1.0;
+    // A ring vertex left with 3 neighbours cannot get good angles later; accept it only
+    // when nothing better exists.
+    return (ear >= 0 && s.valence[ear] == 4) ? 0.5 * angle : angle;
+  };
+
+  // Max-min triangulation of the convex-indexed polygon 0..k-1 by dynamic programming.
+  s.best_min.assign(static_cast<std::size_t>(k * k), -1.0);
+  s.best_sum.assign(static_cast<std::size_t>(k * k), 0.0);
+  s.choice.assign(static_cast<std::size_t>(k * k), -1);
+  for (int i = 0; i + 1 < k; ++i) s.best_min[i * k + i + 1] = kInf;
+  for (int len = 2; len < k; ++len) {
+    for (int i = 0; i + len < k; ++i) {
+      const int j = i + len;
+      double best = -1.0, best_sum = 0.0;
+      int best_m = -1;
+      for (int m = i + 1; m < j; ++m) {
+        const double left = s.best_min[i * k + m];
+        const double right = s.best_min[m * k + j];
+        if (left <= 0 || right <= 0) continue;
+        const double sc = score(i, m, j);
+        if (sc <= 0) continue;
+        const double worst = std::min({sc, left, right});
+        const double sum = sc + s.best_sum[i * k + m] + s.best_sum[m * k + j];
+        if (worst > best + 1e-12 || (worst > best - 1e-12 && sum > best_sum)) {
+          best = worst;
+          best_sum = sum;
+          best_m = m;
+        }
+      }
+      s.best_min[i * k + j] = best;
+      s.best_sum[i * k + j] = best_sum;
+      s.choice[i * k + j] = best_m;
+    }
+  }
+  if (s.best_min[k - 1] <= 0) return false;
+
+  s.local.clear();
+  // Unwind the choices with an explicit stack of (i, j) sub-polygons.
+  s.around.clear();
+  s.around.push_back(0);
+  s.around.push_back(k - 1);
+  while (!s.around.empty()) {
+    const int j = s.around.back();
+    s.around.pop_back();
+    const int i = s.around.back();
+    s.around.pop_back();
+    if (j - i < 2) continue;
+    const int m = s.choice[i * k + j];
+    s.local.push_back({i, m, j});
+    s.around.push_back(i);
+    s.around.push_back(m);
+    s.around.push_back(m);
+    s.around.push_back(j);
+  }
+  for (const Triangle& t : s.local) out.push_back({s.ring[t[0]], s.ring[t[1]], s.ring[t[2]]});
+
+  // Faces around the hole: every face at a ring vertex that is not in the fan of v.
+  s.around.clear();
+  for (int r : s.ring) {
+    const int h0 = mesh.outgoing(r);
+    int h = h0;
+    do {
+      const int f = HalfedgeMesh::face_of(h);
+      if (std::find(s.fan.begin(), s.fan.end(), f) == s.fan.end()) s.around.push_back(f);
+      h = mesh.rotate_ccw(h);
+    } while (h != h0);
+  }
+  std::sort(s.around.begin(), s.around.end());
+  s.around.erase(std::unique(s.around.begin(), s.around.end()), s.around.end());
+  for (const Triangle& t : out) {
+    const Vec3 n = (mesh.position(t[1]) - mesh.position(t[0]))
+                       .cross(mesh.position(t[2]) - mesh.position(t[0]))
+                       .normalized();
+    for (int f : s.around) {
+      const Triangle other = mesh.face_vertices(f);
+      int shared = 0;
+      for (int a : t) shared += (a == other[0] || a == other[1] || a == other[2]) ? 1 : 0;
+      if (shared == 3) return false;
+      if (shared == 2) {
+        // Across a hole side: the new triangle must not fold onto its outer neighbour
+        // beyond a 120° bend, unless the removed fan face was already bent that far.
+        const Vec3 m = mesh.face_area_vector(f).normalized();
+        if (n.dot(m) < -0.5) {
+          // Find the fan face on the same side for the "already that sharp" exception.
+          double old_dot = 1.0;
+          for (int g : s.fan) {
+            const Triangle ft = mesh.face_vertices(g);
+            int common = 0;
+            for (int a : ft) common += (a == other[0] || a == other[1] || a == other[2]) ? 1 : 0;
+            if (common == 2) old_dot = mesh.face_area_vector(g).normalized().dot(m);
+          }
+          if (n.dot(m) < old_dot) return false;
+        }
+        continue;
+      }
+      if (triangles_clash(mesh, t, other)) return false;
+    }
+  }
+  return true;
+}
+
+}  // namespace
+
+CoarsenResult coarsen(const SurfaceMesh& input, const CoarsenOptions& options,
+                      const Reporter& reporter) {
+  if (!std::isfinite(options.t0) || !std::isfinite(options.alpha) || !std::isfinite(options.beta)) {
+    throw Error("coarsening: t0, alpha and beta must be finite numbers");
+  }
+  if (options.rings < 1) {
+    throw Error("coarsening: rings must be at least 1 (got " + std::to_string(options.rings) + ")");
+  }
+  if (options.max_passes < 0) throw Error("coarsening: max_passes must not be negative");
+  for (const Sphere& sphere : options.keep_spheres) {
+    if (!(sphere.radius >= 0) || !sphere.center.allFinite()) {
+      throw Error("coarsening: keep-sphere radii must be >= 0 and centres finite");
+    }
+  }
+
+  HalfedgeMesh mesh(input);
+  const int n = mesh.vertex_capacity();
+  const int initial_vertices = mesh.vertex_count();
+
+  std::vector<std::uint8_t> locked(static_cast<std::size_t>(n), 0);
+  if (!options.keep_spheres.empty()) {
+    tbb::parallel_for(0, n, [&](int v) {
+      for (const Sphere& sphere : options.keep_spheres) {
+        if (sphere.contains(mesh.position(v))) locked[v] = 1;
+      }
+    });
+  }
+
+  // Connected components, so that none is reduced below a tetrahedron.
+  std::vector<int> component(static_cast<std::size_t>(n), -1);
+  std::vector<int> component_size;
+  {
+    std::vector<int> stack;
+    for (int v = 0; v < n; ++v) {
+      if (!mesh.vertex_alive(v) || component[v] >= 0) continue;
+      const int id = static_cast<int>(component_size.size());
+      component_size.push_back(0);
+      component[v] = id;
+      stack.push_back(v);
+      while (!stack.empty()) {
+        const int u = stack.back();
+        stack.pop_back();
+        ++component_size[id];
+        const int h0 = mesh.outgoing(u);
+        int h = h0;
+        do {
+          const int w = mesh.head(h);
+          if (component[w] < 0) {
+            component[w] = id;
+            stack.push_back(w);
+          }
+          h = mesh.rotate_ccw(h);
+        } while (h != h0);
+      }
+    }
+  }
+
+  tbb::enumerable_thread_specific<Scratch> scratch;
+  Scratch main_scratch;
+  std::vector<Vec3> normals;
+  std::vector<double> value(static_cast<std::size_t>(n), kInf);
+  std::vector<int> candidates, selected, blocked(static_cast<std::size_t>(n), -1),
+      touched(static_cast<std::size_t>(n), -1);
+  std::vector<std::vector<Triangle>> plans;
+  std::vector<std::uint8_t> planned;
+  std::vector<Triangle> replan;
+
+  CoarsenResult result;
+  const bool plain_exponents = options.alpha == 1.0 && options.beta == 1.0;
+  for (int pass = 0; pass < options.max_passes && options.t0 > 0; ++pass) {
+    compute_vertex_normals(mesh, normals);
+    tbb::parallel_for(0, n, [&](int v) {
+      value[v] = kInf;
+      if (!mesh.vertex_alive(v) || locked[v]) return;
+      Scratch& s = scratch.local();
+      const Vec3& x = mesh.position(v);
+      double longest = 0;
+      const int h0 = mesh.outgoing(v);
+      int h = h0;
+      do {
+        longest = std::max(longest, (mesh.position(mesh.head(h)) - x).squaredNorm());
+        h = mesh.rotate_ccw(h);
+      } while (h != h0);
+      longest = std::sqrt(longest);
+      mesh.k_ring(v, options.rings, s.rings, s.verts);
+      s.normals.clear();
+      for (int u : s.verts) s.normals.push_back(normals[u]);
+      const StructureTensor tensor = structure_tensor_of_normals(s.normals);
+      if (!(tensor.eigenvalues[0] > 0)) return;
+      const double ratio = tensor.eigenvalues[1] / tensor.eigenvalues[0];
+      value[v] = plain_exponents ? longest * ratio
+                                 : std::pow(longest, options.alpha) * std::pow(ratio, options.beta);
+    });
+
+    candidates.clear();
+    for (int v = 0; v < n; ++v) {
+      if (value[v] < options.t0) candidates.push_back(v);
+    }
+    if (candidates.empty()) break;
+    // Most deletable first (flattest and densest), index as the tie-break: deterministic.
+    std::sort(candidates.begin(), candidates.end(),
+              [&](int a, int b) { return value[a] < value[b] || (value[a] == value[b] && a < b); });
+    selected.clear();
+    for (int v : candidates) {
+      if (blocked[v] == pass) continue;
+      selected.push_back(v);
+      blocked[v] = pass;
+      const int h0 = mesh.outgoing(v);
+      int h = h0;
+      do {
+        blocked[mesh.head(h)] = pass;
+        h = mesh.rotate_ccw(h);
+      } while (h != h0);
+    }
+
+    plans.resize(selected.size());
+    planned.assign(selected.size(), 0);
+    tbb::parallel_for(std::size_t{0}, selected.size(), [&](std::size_t i) {
+      planned[i] = plan_removal(mesh, selected[i], scratch.local(), plans[i]) ? 1 : 0;
+    });
+
+    // Apply in priority order. A plan computed before this pass's earlier deletions is
+    // still exact unless one of them changed a star around the hole (a ring vertex of the
+    // hole was touched); then it is recomputed now. Either way the outcome equals a purely
+    // sequential run, whatever the thread count.
+    std::size_t removed_this_pass = 0;
+    for (std::size_t i = 0; i < selected.size(); ++i) {
+      const int v = selected[i];
+      if (component_size[component[v]] <= 4) continue;
+      mesh.one_ring(v, main_scratch.verts);
+      bool stale = false;
+      for (int r : main_scratch.verts) stale = stale || touched[r] == pass;
+      const std::vector<Triangle>* plan = &plans[i];
+      if (stale) {
+        if (!plan_removal(mesh, v, main_scratch, replan)) continue;
+        plan = &replan;
+      } else if (!planned[i]) {
+        continue;
+      }
+      try {
+        mesh.remove_vertex(v, *plan);
+      } catch (const Error&) {
+        continue;  // the gateway refused (a conflict the plan could not see): keep v
+      }
+      for (int r : main_scratch.verts) touched[r] = pass;
+      --component_size[component[v]];
+      ++removed_this_pass;
+    }
+    result.removed += removed_this_pass;
+    result.passes = pass + 1;
+    reporter.progress("coarsen", static_cast<double>(pass + 1) / options.max_passes);
+    if (removed_this_pass == 0) break;
+  }
+
+  if (options.equalize_valence && result.removed > 0) {
+    flip_edges_for_valence(mesh, FlipOptions{}, 30.0, locked);
+  }
+  reporter.progress("coarsen", 1.0);
+
+  HalfedgeMesh::Compacted compact = mesh.to_surface_mesh();
+  result.mesh = std::move(compact.mesh);
+  result.provenance = std::move(compact.new_to_old);
+  result.removed = static_cast<std::size_t>(initial_vertices - mesh.vertex_count());
+  return result;
+}
+
+}  // namespace molmesh
