@@ -1,0 +1,95 @@
+#include "molmesh/io/atoms_structure.hpp"
+
+#include <cctype>
+#include <gemmi/cif.hpp>
+#include <gemmi/mmcif.hpp>
+#include <gemmi/modify.hpp>
+#include <gemmi/pdb.hpp>
+#include <unordered_map>
+
+#include "molmesh/core/error.hpp"
+#include "molmesh/io/text_input.hpp"
+
+namespace molmesh {
+namespace {
+
+// Serial number -> line, so that later problems (an element without a radius) can point
+// at the record. The first record with a serial wins; gemmi keeps records in file order.
+std::unordered_map<int, std::size_t> pdb_atom_lines(const std::string& contents) {
+  std::unordered_map<int, std::size_t> lines;
+  io_detail::LineCursor cursor(contents);
+  std::string_view line;
+  while (cursor.next(line)) {
+    if (line.substr(0, 6) != "ATOM  " && line.substr(0, 6) != "HETATM") continue;
+    if (line.size() < 11) continue;
+    const auto serial = io_detail::parse_integer(io_detail::trim(line.substr(6, 5)));
+    if (serial) lines.emplace(static_cast<int>(*serial), cursor.line_number());
+  }
+  return lines;
+}
+
+}  // namespace
+
+StructureAtoms parse_structure(const std::string& contents, const std::string& name, bool mmcif,
+                               const Reporter& reporter) {
+  gemmi::Structure st;
+  try {
+    if (mmcif) {
+      st = gemmi::make_structure(
+          gemmi::cif::read_memory(contents.data(), contents.size(), name.c_str()));
+    } else {
+      st = gemmi::read_pdb_from_memory(contents.data(), contents.size(), name);
+    }
+  } catch (const std::exception& e) {
+    // gemmi's messages already say what is wrong (and often where).
+    std::string what = e.what();
+    if (what.rfind(name, 0) == 0) what = what.substr(name.size());
+    while (!what.empty() && (what.front() == ':' || what.front() == ' ')) what.erase(0, 1);
+    throw InputError(name, "cannot parse as " + std::string(mmcif ? "mmCIF" : "PDB") + ": " + what);
+  }
+  StructureAtoms out;
+  if (st.models.empty()) return out;
+  if (st.models.size() > 1)
+    reporter.warn(name + ": only the first of " + std::to_string(st.models.size()) +
+                  " models is used");
+  gemmi::Model& model = st.models.front();
+
+  auto count_atoms = [&model](bool only_alternative) {
+    std::size_t count = 0;
+    for (const auto& chain : model.chains)
+      for (const auto& residue : chain.residues)
+        for (const auto& atom : residue.atoms)
+          if (!only_alternative || atom.altloc != '\0') ++count;
+    return count;
+  };
+  const std::size_t alternative = count_atoms(true);
+  const std::size_t before = count_atoms(false);
+  gemmi::remove_alternative_conformations(model);
+  const std::size_t dropped = before - count_atoms(false);
+  if (dropped > 0)
+    reporter.warn(name + ": " + std::to_string(dropped) + " of " + std::to_string(alternative) +
+                  " alternative-location atoms dropped (the first conformer is kept)");
+
+  const auto lines = mmcif ? std::unordered_map<int, std::size_t>{} : pdb_atom_lines(contents);
+  for (const auto& chain : model.chains) {
+    for (const auto& residue : chain.residues) {
+      for (const auto& a : residue.atoms) {
+        Atom atom;
+        atom.center = Vec3(a.pos.x, a.pos.y, a.pos.z);
+        atom.charge = static_cast<double>(a.charge);  // formal charge, if the file has one
+        atom.atom_name = a.name;
+        atom.residue_name = residue.name;
+        atom.residue_number = residue.seqid.num.has_value() ? residue.seqid.num.value : 0;
+        atom.chain = chain.name;
+        atom.hetatm = residue.het_flag == 'H';
+        if (a.element != gemmi::El::X) atom.element = a.element.uname();
+        out.atoms.push_back(std::move(atom));
+        const auto it = lines.find(a.serial);
+        out.lines.push_back(it == lines.end() ? 0 : it->second);
+      }
+    }
+  }
+  return out;
+}
+
+}  // namespace molmesh

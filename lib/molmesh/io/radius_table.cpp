@@ -1,0 +1,48 @@
+#include "molmesh/io/radius_table.hpp"
+
+#include <cmath>
+
+#include "molmesh/core/error.hpp"
+#include "molmesh/io/text_input.hpp"
+
+namespace molmesh {
+
+RadiusTable read_radius_table(const std::filesystem::path& path) {
+  using namespace io_detail;
+  const std::string name = path.string();
+  const std::string text = read_file_contents(path);
+  RadiusTable table;
+  table.source = name;
+  LineCursor lines(text);
+  std::string_view line;
+  while (lines.next(line)) {
+    if (const auto hash = line.find('#'); hash != std::string_view::npos)
+      line = line.substr(0, hash);
+    const auto fields = split_fields(line);
+    if (fields.empty()) continue;
+    const std::size_t n = lines.line_number();
+    if (fields.size() != 2 && fields.size() != 3)
+      throw InputError(name, n,
+                       "expected 'RESNAME ATOMNAME radius' or 'ELEMENT radius', found " +
+                           std::to_string(fields.size()) + " fields");
+    const auto radius = parse_double(fields.back());
+    if (!radius)
+      throw InputError(name, n, "radius '" + std::string(fields.back()) + "' is not a number");
+    if (!std::isfinite(*radius) || *radius < 0.0)
+      throw InputError(name, n,
+                       "radius must be finite and >= 0, found " + std::string(fields.back()));
+    bool inserted = false;
+    if (fields.size() == 2) {
+      inserted = table.by_element.emplace(to_upper(fields[0]), *radius).second;
+    } else {
+      inserted = table.by_residue_atom
+                     .emplace(std::pair{to_upper(fields[0]), to_upper(fields[1])}, *radius)
+                     .second;
+    }
+    if (!inserted) throw InputError(name, n, "duplicate entry (an earlier line has the same key)");
+  }
+  if (table.empty()) throw InputError(name, "radius table has no entries");
+  return table;
+}
+
+}  // namespace molmesh

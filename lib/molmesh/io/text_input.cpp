@@ -1,0 +1,126 @@
+#include "molmesh/io/text_input.hpp"
+
+#include <zlib.h>
+
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+#include <fstream>
+#include <iterator>
+
+#include "molmesh/core/error.hpp"
+
+namespace molmesh::io_detail {
+namespace {
+
+bool is_gzip(const std::string& bytes) {
+  return bytes.size() >= 2 && static_cast<unsigned char>(bytes[0]) == 0x1f &&
+         static_cast<unsigned char>(bytes[1]) == 0x8b;
+}
+
+std::string gunzip(const std::string& bytes, const std::string& name) {
+  z_stream stream{};
+  // 16 + MAX_WBITS: expect a gzip header; concatenated members are handled by the loop.
+  if (inflateInit2(&stream, 16 + MAX_WBITS) != Z_OK)
+    throw InputError(name, "cannot initialise gzip decompression");
+  std::string out;
+  stream.next_in = reinterpret_cast<Bytef*>(const_cast<char*>(bytes.data()));
+  stream.avail_in = static_cast<uInt>(bytes.size());
+  char buffer[1 << 16];
+  int status = Z_OK;
+  while (true) {
+    stream.next_out = reinterpret_cast<Bytef*>(buffer);
+    stream.avail_out = sizeof buffer;
+    status = inflate(&stream, Z_NO_FLUSH);
+    if (status != Z_OK && status != Z_STREAM_END) break;
+    out.append(buffer, sizeof buffer - stream.avail_out);
+    if (status == Z_STREAM_END) {
+      if (stream.avail_in == 0) break;
+      inflateReset(&stream);  // another gzip member follows
+    }
+  }
+  inflateEnd(&stream);
+  if (status != Z_STREAM_END)
+    throw InputError(name, "corrupt or truncated gzip data (try: gzip -t " + name + ")");
+  return out;
+}
+
+}  // namespace
+
+std::string read_file_contents(const std::filesystem::path& path) {
+  const std::string name = path.string();
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec)) throw InputError(name, "no such file");
+  if (std::filesystem::is_directory(path, ec)) throw InputError(name, "is a folder, not a file");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(name, "cannot open for reading (check permissions)");
+  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (in.bad()) throw InputError(name, "read error");
+  if (is_gzip(bytes)) return gunzip(bytes, name);
+  return bytes;
+}
+
+std::string format_extension(const std::filesystem::path& path) {
+  auto lower = [](std::string s) {
+    std::transform(s.begin(), s.end(), s.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return s;
+  };
+  std::string ext = lower(path.extension().string());
+  if (ext == ".gz") ext = lower(path.stem().extension().string());
+  return ext;
+}
+
+bool LineCursor::next(std::string_view& line) {
+  if (pos_ >= text_.size()) return false;
+  const std::size_t end = text_.find('\n', pos_);
+  const std::size_t stop = end == std::string_view::npos ? text_.size() : end;
+  line = text_.substr(pos_, stop - pos_);
+  if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+  pos_ = stop + 1;
+  ++line_number_;
+  return true;
+}
+
+std::vector<std::string_view> split_fields(std::string_view line, bool commas) {
+  std::vector<std::string_view> fields;
+  auto separator = [commas](char c) {
+    return c == ' ' || c == '\t' || c == '\v' || c == '\f' || (commas && c == ',');
+  };
+  std::size_t i = 0;
+  while (i < line.size()) {
+    while (i < line.size() && separator(line[i])) ++i;
+    const std::size_t start = i;
+    while (i < line.size() && !separator(line[i])) ++i;
+    if (i > start) fields.push_back(line.substr(start, i - start));
+  }
+  return fields;
+}
+
+std::string_view trim(std::string_view s) {
+  const auto blank = [](char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n'; };
+  while (!s.empty() && blank(s.front())) s.remove_prefix(1);
+  while (!s.empty() && blank(s.back())) s.remove_suffix(1);
+  return s;
+}
+
+std::optional<double> parse_double(std::string_view field) {
+  if (field.empty()) return std::nullopt;
+  // from_chars rejects a leading '+', which some writers emit.
+  if (field.front() == '+') field.remove_prefix(1);
+  double value = 0.0;
+  const auto [end, ec] = std::from_chars(field.data(), field.data() + field.size(), value);
+  if (ec != std::errc() || end != field.data() + field.size()) return std::nullopt;
+  return value;
+}
+
+std::optional<long long> parse_integer(std::string_view field) {
+  if (field.empty()) return std::nullopt;
+  if (field.front() == '+') field.remove_prefix(1);
+  long long value = 0;
+  const auto [end, ec] = std::from_chars(field.data(), field.data() + field.size(), value);
+  if (ec != std::errc() || end != field.data() + field.size()) return std::nullopt;
+  return value;
+}
+
+}  // namespace molmesh::io_detail

@@ -1,0 +1,45 @@
+#pragma once
+// Shared helpers for the readers: load a whole file (gunzipping .gz), walk its lines with
+// line numbers, split fields and parse numbers strictly, so every reader reports errors
+// the same way ("file:line: what").
+#include <cstddef>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace molmesh::io_detail {
+
+// Whole file contents; transparently decompresses gzip data (detected by magic bytes).
+// Throws InputError for missing, unreadable or corrupt-gzip files.
+std::string read_file_contents(const std::filesystem::path& path);
+
+// The extension that selects a format, lowercased, with a trailing ".gz" skipped:
+// "x.PDB.gz" -> ".pdb".
+std::string format_extension(const std::filesystem::path& path);
+
+// Iterates lines (LF or CRLF), counting from 1.
+class LineCursor {
+ public:
+  explicit LineCursor(std::string_view text) : text_(text) {}
+  // False at the end of the text.
+  bool next(std::string_view& line);
+  std::size_t line_number() const { return line_number_; }
+
+ private:
+  std::string_view text_;
+  std::size_t pos_ = 0;
+  std::size_t line_number_ = 0;
+};
+
+// Fields separated by blanks (space, tab) and, when `commas`, commas.
+std::vector<std::string_view> split_fields(std::string_view line, bool commas = false);
+
+std::string_view trim(std::string_view s);
+
+// Whole-field parses; nullopt unless the entire field is one number.
+std::optional<double> parse_double(std::string_view field);
+std::optional<long long> parse_integer(std::string_view field);
+
+}  // namespace molmesh::io_detail
