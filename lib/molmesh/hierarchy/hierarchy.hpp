@@ -38,8 +38,8 @@ struct LevelTransfer {
 };
 
 struct Hierarchy {
-  std::vector<HierarchyLevel> levels;    // levels[0] finest
-  std::vector<LevelTransfer> transfers;  // transfers[i]: level i+1 -> level i
+  std::vector<HierarchyLevel> levels;             // levels[0] finest
+  std::vector<LevelTransfer> transfers;           // transfers[i]: level i+1 -> level i
   std::map<std::string, std::string> parameters;  // every meshing parameter, as text
   std::string input_name;
   std::string input_checksum;  // SHA-256 (hex) of the input file's bytes
