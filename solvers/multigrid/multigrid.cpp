@@ -1,0 +1,155 @@
+#include "solvers/multigrid/multigrid.hpp"
+
+#include <Eigen/SparseCholesky>
+#include <cmath>
+#include <string>
+
+#include "molmesh/core/error.hpp"
+#include "solvers/multigrid/pcg.hpp"
+
+namespace molmesh::solvers {
+
+namespace {
+
+using ColMajor = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
+
+struct Level {
+  SparseMatrix a;
+  Eigen::VectorXd inverse_diagonal;
+  SparseMatrix p;   // this level x next coarser level (empty on the coarsest)
+  SparseMatrix pt;  // restriction
+};
+
+void gauss_seidel(const Level& level, const Eigen::VectorXd& b, Eigen::VectorXd& x, bool forward) {
+  const SparseMatrix& a = level.a;
+  const int* outer = a.outerIndexPtr();
+  const int* inner = a.innerIndexPtr();
+  const double* values = a.valuePtr();
+  const auto n = a.rows();
+  auto relax = [&](Eigen::Index i) {
+    double sum = b[i];
+    for (int k = outer[i]; k < outer[i + 1]; ++k) sum -= values[k] * x[inner[k]];
+    // The loop subtracted the diagonal term too; add it back through the update.
+    x[i] += sum * level.inverse_diagonal[i];
+  };
+  if (forward) {
+    for (Eigen::Index i = 0; i < n; ++i) relax(i);
+  } else {
+    for (Eigen::Index i = n - 1; i >= 0; --i) relax(i);
+  }
+}
+
+}  // namespace
+
+struct MultigridPreconditioner::Impl {
+  std::vector<Level> levels;
+  Eigen::SimplicialLDLT<ColMajor> coarse_solver;
+  MultigridOptions options;
+
+  void vcycle(std::size_t l, const Eigen::VectorXd& b, Eigen::VectorXd& x) const {
+    if (l + 1 == levels.size()) {
+      x = coarse_solver.solve(b);
+      return;
+    }
+    const Level& level = levels[l];
+    x = Eigen::VectorXd::Zero(b.size());
+    for (int s = 0; s < options.smoothing_sweeps; ++s) gauss_seidel(level, b, x, true);
+    Eigen::VectorXd ax;
+    parallel_multiply(level.a, x, ax);
+    const Eigen::VectorXd residual = b - ax;
+    Eigen::VectorXd rc;
+    parallel_multiply(level.pt, residual, rc);
+    Eigen::VectorXd xc;
+    vcycle(l + 1, rc, xc);
+    Eigen::VectorXd correction;
+    parallel_multiply(level.p, xc, correction);
+    x += correction;
+    for (int s = 0; s < options.smoothing_sweeps; ++s) gauss_seidel(level, b, x, false);
+  }
+};
+
+MultigridPreconditioner::MultigridPreconditioner(const SparseMatrix& a,
+                                                 std::span<const int> fine_free_to_full,
+                                                 std::span<const SparseMatrix> prolongations,
+                                                 const MultigridOptions& options)
+    : impl_(std::make_unique<Impl>()) {
+  impl_->options = options;
+  Level fine;
+  fine.a = a;
+  fine.a.makeCompressed();
+  impl_->levels.push_back(std::move(fine));
+  // rows_kept[i] = vertex (of the current coarse mesh) behind unknown i on that level.
+  std::vector<int> rows_kept(fine_free_to_full.begin(), fine_free_to_full.end());
+  for (std::size_t l = 0; l < prolongations.size(); ++l) {
+    const SparseMatrix& full = prolongations[l];
+    for (int v : rows_kept) {
+      if (v < 0 || v >= full.rows()) {
+        throw Error("multigrid: prolongation " + std::to_string(l) + " has " +
+                    std::to_string(full.rows()) + " rows but the level has vertex " +
+                    std::to_string(v));
+      }
+    }
+    // Largest weight per coarse column among the rows that stay.
+    std::vector<double> column_max(static_cast<std::size_t>(full.cols()), 0.0);
+    for (int v : rows_kept) {
+      for (SparseMatrix::InnerIterator it(full, v); it; ++it) {
+        auto& m = column_max[static_cast<std::size_t>(it.col())];
+        m = std::max(m, std::abs(it.value()));
+      }
+    }
+    std::vector<int> column_index(column_max.size(), -1);
+    std::vector<int> coarse_kept;
+    for (std::size_t c = 0; c < column_max.size(); ++c) {
+      if (column_max[c] >= options.drop_column_below) {
+        column_index[c] = static_cast<int>(coarse_kept.size());
+        coarse_kept.push_back(static_cast<int>(c));
+      }
+    }
+    if (coarse_kept.empty()) break;
+    std::vector<Eigen::Triplet<double, int>> triplets;
+    for (std::size_t i = 0; i < rows_kept.size(); ++i) {
+      for (SparseMatrix::InnerIterator it(full, rows_kept[i]); it; ++it) {
+        const int c = column_index[static_cast<std::size_t>(it.col())];
+        if (c >= 0) triplets.emplace_back(static_cast<int>(i), c, it.value());
+      }
+    }
+    Level& level = impl_->levels.back();
+    level.p.resize(static_cast<Eigen::Index>(rows_kept.size()),
+                   static_cast<Eigen::Index>(coarse_kept.size()));
+    level.p.setFromTriplets(triplets.begin(), triplets.end());
+    level.pt = level.p.transpose();
+    Level coarse;
+    const SparseMatrix ap = level.a * level.p;
+    coarse.a = SparseMatrix(level.pt * ap);
+    coarse.a.makeCompressed();
+    impl_->levels.push_back(std::move(coarse));
+    rows_kept = std::move(coarse_kept);
+  }
+  for (Level& level : impl_->levels) {
+    level.inverse_diagonal = level.a.diagonal().cwiseInverse();
+    if (!level.inverse_diagonal.allFinite()) {
+      throw Error("multigrid: a level's operator has a zero diagonal entry");
+    }
+  }
+  impl_->coarse_solver.compute(ColMajor(impl_->levels.back().a));
+  if (impl_->coarse_solver.info() != Eigen::Success) {
+    throw Error("multigrid: the coarsest operator could not be factorised");
+  }
+}
+
+MultigridPreconditioner::~MultigridPreconditioner() = default;
+MultigridPreconditioner::MultigridPreconditioner(MultigridPreconditioner&&) noexcept = default;
+MultigridPreconditioner& MultigridPreconditioner::operator=(MultigridPreconditioner&&) noexcept =
+    default;
+
+void MultigridPreconditioner::apply(const Eigen::VectorXd& r, Eigen::VectorXd& z) const {
+  impl_->vcycle(0, r, z);
+}
+
+std::vector<int> MultigridPreconditioner::level_sizes() const {
+  std::vector<int> sizes;
+  for (const Level& level : impl_->levels) sizes.push_back(static_cast<int>(level.a.rows()));
+  return sizes;
+}
+
+}  // namespace molmesh::solvers

@@ -1,0 +1,125 @@
+#include "solvers/physics/poisson.hpp"
+
+#include <cmath>
+#include <numbers>
+#include <string>
+
+#include "molmesh/core/error.hpp"
+#include "solvers/fem/dirichlet.hpp"
+#include "solvers/fem/p1_assembly.hpp"
+#include "solvers/fem/point_locator.hpp"
+#include "solvers/physics/units.hpp"
+
+namespace molmesh::solvers {
+
+namespace {
+
+struct Charge {
+  double q = 0.0;
+  PointLocation where;
+};
+
+double evaluate(const TetMesh& mesh, const Eigen::VectorXd& field, const PointLocation& at) {
+  double value = 0.0;
+  const Tetrahedron& tet = mesh.tetrahedra[static_cast<std::size_t>(at.tetrahedron)];
+  for (std::size_t a = 0; a < 4; ++a) value += at.barycentric[a] * field[tet[a]];
+  return value;
+}
+
+}  // namespace
+
+PoissonResult solve_solvation_energy(const TetMesh& mesh, const Atoms& atoms,
+                                     std::span<const SparseMatrix> prolongations,
+                                     const PoissonOptions& options, const Reporter& reporter) {
+  if (!(options.pdie > 0.0) || !(options.sdie > 0.0)) {
+    throw Error("Poisson: permittivities must be positive");
+  }
+  const std::size_t nv = mesh.points.size();
+  const auto n = static_cast<Eigen::Index>(nv);
+  PoissonResult result;
+  reporter.progress("poisson: locate charges", 0.0);
+  const PointLocator locator(mesh);
+  std::vector<Charge> charges;
+  for (std::size_t i = 0; i < atoms.size(); ++i) {
+    if (atoms[i].charge == 0.0) continue;
+    const auto where = locator.locate(atoms[i].center);
+    if (!where) {
+      throw Error("Poisson: atom " + std::to_string(i + 1) + " (" + atoms[i].residue_name + " " +
+                  std::to_string(atoms[i].residue_number) + " " + atoms[i].atom_name +
+                  ") lies outside the mesh; a full mesh (molecule and solvent) is needed");
+    }
+    const Tetrahedron& tet = mesh.tetrahedra[static_cast<std::size_t>(where->tetrahedron)];
+    double nearest = 1e300;
+    for (int v : tet) {
+      nearest =
+          std::min(nearest, (mesh.points[static_cast<std::size_t>(v)] - atoms[i].center).norm());
+    }
+    result.max_charge_offset = std::max(result.max_charge_offset, nearest);
+    charges.push_back({atoms[i].charge, *where});
+  }
+  result.charges = static_cast<int>(charges.size());
+  if (charges.empty()) throw Error("Poisson: no atom carries a charge");
+
+  // -div(eps grad phi) = 4 pi C sum q delta: phi in kJ/(mol e), eps relative.
+  const double source_scale = 4.0 * std::numbers::pi * units::kCoulombKjAngstromPerMol;
+  Eigen::VectorXd load = Eigen::VectorXd::Zero(n);
+  for (const Charge& c : charges) {
+    const Tetrahedron& tet = mesh.tetrahedra[static_cast<std::size_t>(c.where.tetrahedron)];
+    for (std::size_t a = 0; a < 4; ++a) load[tet[a]] += source_scale * c.q * c.where.barycentric[a];
+  }
+
+  const std::vector<unsigned> bits = boundary_vertex_marker_bits(mesh);
+  unsigned mask = 0;
+  for (int m : options.dirichlet_markers) {
+    if (m >= 0 && m <= 30) mask |= 1u << m;
+  }
+  std::vector<char> dirichlet(nv, 0);
+  std::vector<std::size_t> boundary;
+  for (std::size_t v = 0; v < nv; ++v) {
+    if (bits[v] & mask) {
+      dirichlet[v] = 1;
+      boundary.push_back(v);
+    }
+  }
+  if (boundary.empty()) throw Error("Poisson: the mesh has no outer-sphere (Dirichlet) vertex");
+  // Coulomb sum at boundary vertices, with unit permittivity; scaled per solve below.
+  Eigen::VectorXd coulomb = Eigen::VectorXd::Zero(n);
+  for (std::size_t v : boundary) {
+    double sum = 0.0;
+    for (std::size_t i = 0; i < atoms.size(); ++i) {
+      if (atoms[i].charge == 0.0) continue;
+      sum += atoms[i].charge / (mesh.points[v] - atoms[i].center).norm();
+    }
+    coulomb[static_cast<Eigen::Index>(v)] = units::kCoulombKjAngstromPerMol * sum;
+  }
+
+  auto solve = [&](double inside, double outside, SolveReport& report, const char* stage) {
+    reporter.progress(stage, 0.0);
+    const std::pair<int, double> table[] = {{markers::kMoleculeRegion, inside},
+                                            {markers::kSolventRegion, outside}};
+    const SparseMatrix k = assemble_stiffness(mesh, cell_coefficients_by_region(mesh, table));
+    const Eigen::VectorXd values = coulomb / outside;
+    const ReducedSystem system = reduce_dirichlet(k, load, dirichlet, values);
+    result.unknowns = static_cast<int>(system.free_to_full.size());
+    Eigen::VectorXd x;
+    report = solve_reduced(system, prolongations, options.solver, x);
+    if (!report.converged) {
+      reporter.warn(std::string(stage) + ": CG stopped at relative residual " +
+                    std::to_string(report.relative_residual));
+    }
+    reporter.progress(stage, 1.0);
+    return expand_solution(system, x, dirichlet, values);
+  };
+  result.potential = solve(options.pdie, options.sdie, result.solvated, "poisson: solvated");
+  const Eigen::VectorXd reference =
+      solve(options.pdie, options.pdie, result.reference, "poisson: reference");
+  result.reaction_potential = result.potential - reference;
+  double energy = 0.0;
+  for (const Charge& c : charges) {
+    energy += 0.5 * c.q * evaluate(mesh, result.reaction_potential, c.where);
+  }
+  result.solvation_energy_kj_per_mol = energy;
+  return result;
+}
+
+}  // namespace molmesh::solvers

@@ -1,0 +1,116 @@
+#include "solvers/physics/smoluchowski.hpp"
+
+#include <cmath>
+#include <string>
+
+#include "molmesh/core/error.hpp"
+#include "solvers/fem/dirichlet.hpp"
+#include "solvers/fem/p1_assembly.hpp"
+#include "solvers/physics/units.hpp"
+
+namespace molmesh::solvers {
+
+namespace {
+
+unsigned marker_mask(const std::vector<int>& list) {
+  unsigned mask = 0;
+  for (int m : list) {
+    if (m >= 0 && m <= 30) mask |= 1u << m;
+  }
+  return mask;
+}
+
+}  // namespace
+
+SmoluchowskiResult solve_smoluchowski(const TetMesh& mesh, std::span<const double> beta_w,
+                                      std::span<const SparseMatrix> prolongations,
+                                      const SmoluchowskiOptions& options,
+                                      const Reporter& reporter) {
+  const std::size_t nv = mesh.points.size();
+  if (!beta_w.empty() && beta_w.size() != nv) {
+    throw Error("Smoluchowski: " + std::to_string(beta_w.size()) + " potential values for " +
+                std::to_string(nv) + " vertices");
+  }
+  if (!(options.diffusion_cm2_per_s > 0.0)) {
+    throw Error("Smoluchowski: the diffusion coefficient must be positive");
+  }
+  reporter.progress("smoluchowski: assemble", 0.0);
+  auto bw = [&](std::size_t v) { return beta_w.empty() ? 0.0 : beta_w[v]; };
+
+  // exp(-beta W) averaged over each cell's vertices: the integral of its P1 interpolant,
+  // which stays accurate where the potential varies quickly near the surface.
+  const bool has_regions = mesh.cell_markers.size() == mesh.tetrahedra.size();
+  std::vector<double> coefficient(mesh.tetrahedra.size(), 0.0);
+  std::vector<char> in_solvent(nv, 0);
+  for (std::size_t t = 0; t < mesh.tetrahedra.size(); ++t) {
+    if (has_regions && mesh.cell_markers[t] != options.solvent_region) continue;
+    double sum = 0.0;
+    for (int v : mesh.tetrahedra[t]) {
+      sum += std::exp(-bw(static_cast<std::size_t>(v)));
+      in_solvent[static_cast<std::size_t>(v)] = 1;
+    }
+    coefficient[t] = 0.25 * sum;
+  }
+  const SparseMatrix k = assemble_stiffness(mesh, coefficient);
+
+  const std::vector<unsigned> bits = boundary_vertex_marker_bits(mesh);
+  const unsigned absorbing = marker_mask(options.absorbing_markers);
+  const unsigned bulk = marker_mask(options.bulk_markers);
+  std::vector<char> dirichlet(nv, 0);
+  std::vector<char> is_absorbing(nv, 0);
+  Eigen::VectorXd values = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(nv));
+  SmoluchowskiResult result;
+  for (std::size_t v = 0; v < nv; ++v) {
+    if (!in_solvent[v]) {
+      dirichlet[v] = 1;  // not part of the problem
+    } else if (bits[v] & absorbing) {
+      dirichlet[v] = 1;
+      is_absorbing[v] = 1;
+      ++result.absorbing_vertices;
+    } else if (bits[v] & bulk) {
+      dirichlet[v] = 1;
+      values[static_cast<Eigen::Index>(v)] = std::exp(bw(v));  // c = 1 -> s = exp(beta W)
+      ++result.bulk_vertices;
+    }
+  }
+  if (result.absorbing_vertices == 0) {
+    throw Error(
+        "Smoluchowski: no solvent vertex lies on an absorbing boundary face (is the "
+        "active site marked in this mesh?)");
+  }
+  if (result.bulk_vertices == 0) {
+    throw Error("Smoluchowski: no vertex lies on the outer (bulk) boundary");
+  }
+  const ReducedSystem system =
+      reduce_dirichlet(k, Eigen::VectorXd::Zero(static_cast<Eigen::Index>(nv)), dirichlet, values);
+  result.unknowns = static_cast<int>(system.free_to_full.size());
+  reporter.progress("smoluchowski: assemble", 1.0);
+  reporter.progress("smoluchowski: solve", 0.0);
+  Eigen::VectorXd x;
+  result.solve = solve_reduced(system, prolongations, options.solver, x);
+  reporter.progress("smoluchowski: solve", 1.0);
+  if (!result.solve.converged) {
+    reporter.warn("Smoluchowski: CG stopped at relative residual " +
+                  std::to_string(result.solve.relative_residual) + " after " +
+                  std::to_string(result.solve.iterations) + " iterations");
+  }
+  result.slotboom = expand_solution(system, x, dirichlet, values);
+  // Residual of the full system at the absorbing vertices = -(flux into them) for unit D.
+  const Eigen::VectorXd residual = k * result.slotboom;
+  double flux = 0.0;
+  for (std::size_t v = 0; v < nv; ++v) {
+    if (is_absorbing[v]) flux -= residual[static_cast<Eigen::Index>(v)];
+  }
+  const double d = options.diffusion_cm2_per_s * units::kSquareAngstromPerSquareCm;
+  result.rate_constant_A3_per_s = d * flux;
+  result.rate_constant_per_molar_per_s =
+      units::rate_to_per_molar_per_second(result.rate_constant_A3_per_s);
+  result.concentration.resize(static_cast<Eigen::Index>(nv));
+  for (std::size_t v = 0; v < nv; ++v) {
+    const auto i = static_cast<Eigen::Index>(v);
+    result.concentration[i] = in_solvent[v] ? result.slotboom[i] * std::exp(-bw(v)) : 0.0;
+  }
+  return result;
+}
+
+}  // namespace molmesh::solvers
