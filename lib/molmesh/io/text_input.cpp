@@ -123,4 +123,27 @@ std::optional<long long> parse_integer(std::string_view field) {
   return value;
 }
 
+void append_number(std::string& out, double value) {
+  char buffer[64];
+  const auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, value);
+  out.append(buffer, ec == std::errc() ? end : buffer);
+}
+
+void append_polygon(const std::vector<long long>& corners, std::size_t vertex_count,
+                    std::vector<std::array<int, 3>>& triangles, const std::string& name,
+                    std::size_t line) {
+  if (corners.size() < 3)
+    throw InputError(name, line,
+                     "face has " + std::to_string(corners.size()) + " corners (at least 3 needed)");
+  for (const long long c : corners) {
+    if (c < 0 || static_cast<unsigned long long>(c) >= vertex_count)
+      throw InputError(name, line,
+                       "vertex index " + std::to_string(c) + " out of range (the file has " +
+                           std::to_string(vertex_count) + " vertices)");
+  }
+  for (std::size_t i = 1; i + 1 < corners.size(); ++i)
+    triangles.push_back({static_cast<int>(corners[0]), static_cast<int>(corners[i]),
+                         static_cast<int>(corners[i + 1])});
+}
+
 }  // namespace molmesh::io_detail

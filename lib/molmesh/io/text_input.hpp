@@ -2,6 +2,7 @@
 // Shared helpers for the readers: load a whole file (gunzipping .gz), walk its lines with
 // line numbers, split fields and parse numbers strictly, so every reader reports errors
 // the same way ("file:line: what").
+#include <array>
 #include <cstddef>
 #include <filesystem>
 #include <optional>
@@ -41,5 +42,15 @@ std::string_view trim(std::string_view s);
 // Whole-field parses; nullopt unless the entire field is one number.
 std::optional<double> parse_double(std::string_view field);
 std::optional<long long> parse_integer(std::string_view field);
+
+// Appends the shortest text that reads back to exactly `value` (round-trip exact).
+void append_number(std::string& out, double value);
+
+// A mesh face with any number of corners, before triangulation.
+// Fan-triangulates polygons (v0, vi, vi+1); throws InputError at `line` for fewer than 3
+// corners or indices outside [0, vertex_count).
+void append_polygon(const std::vector<long long>& corners, std::size_t vertex_count,
+                    std::vector<std::array<int, 3>>& triangles, const std::string& name,
+                    std::size_t line);
 
 }  // namespace molmesh::io_detail

@@ -1,0 +1,131 @@
+#include "molmesh/io/mesh_off.hpp"
+
+#include <cmath>
+#include <vector>
+
+#include "molmesh/core/error.hpp"
+#include "molmesh/io/text_input.hpp"
+
+namespace molmesh {
+namespace {
+
+using namespace io_detail;
+
+// Next line with content, comments stripped; false at the end.
+bool next_content(LineCursor& lines, std::vector<std::string_view>& fields) {
+  std::string_view line;
+  while (lines.next(line)) {
+    if (const auto hash = line.find('#'); hash != std::string_view::npos)
+      line = line.substr(0, hash);
+    fields = split_fields(line);
+    if (!fields.empty()) return true;
+  }
+  return false;
+}
+
+long long count_field(std::string_view field, const std::string& name, std::size_t line,
+                      const char* what) {
+  const auto value = parse_integer(field);
+  if (!value || *value < 0)
+    throw InputError(
+        name, line,
+        std::string(what) + " '" + std::string(field) + "' is not a non-negative integer");
+  return *value;
+}
+
+}  // namespace
+
+SurfaceMesh parse_off(std::string_view text, const std::string& name) {
+  LineCursor lines(text);
+  std::vector<std::string_view> fields;
+  if (!next_content(lines, fields)) throw InputError(name, "empty file: no OFF header");
+  const std::string_view keyword = fields[0];
+  if (keyword.size() < 3 || keyword.substr(keyword.size() - 3) != "OFF")
+    throw InputError(
+        name, lines.line_number(),
+        "not an OFF file: the first line must be 'OFF', found '" + std::string(keyword) + "'");
+  if (keyword.find("4") != std::string_view::npos || keyword.find("n") != std::string_view::npos)
+    throw InputError(name, lines.line_number(),
+                     "only 3D OFF is supported, found " + std::string(keyword));
+  fields.erase(fields.begin());
+  if (fields.empty() && !next_content(lines, fields))
+    throw InputError(name, lines.line_number(), "missing the 'vertices faces edges' counts");
+  if (fields.size() < 2)
+    throw InputError(name, lines.line_number(), "expected 'vertices faces edges' counts");
+  const std::size_t counts_line = lines.line_number();
+  const auto nv =
+      static_cast<std::size_t>(count_field(fields[0], name, counts_line, "vertex count"));
+  const auto nf = static_cast<std::size_t>(count_field(fields[1], name, counts_line, "face count"));
+
+  SurfaceMesh mesh;
+  mesh.points.reserve(nv);
+  for (std::size_t i = 0; i < nv; ++i) {
+    if (!next_content(lines, fields))
+      throw InputError(
+          name, lines.line_number(),
+          "file ends after " + std::to_string(i) + " of " + std::to_string(nv) + " vertices");
+    if (fields.size() < 3) throw InputError(name, lines.line_number(), "expected 'x y z'");
+    Vec3 p;
+    for (int k = 0; k < 3; ++k) {
+      const auto v = parse_double(fields[static_cast<std::size_t>(k)]);
+      if (!v || !std::isfinite(*v))
+        throw InputError(name, lines.line_number(),
+                         "coordinate '" + std::string(fields[static_cast<std::size_t>(k)]) +
+                             "' is not a finite number");
+      p[k] = *v;
+    }
+    mesh.points.push_back(p);
+  }
+  std::vector<long long> corners;
+  for (std::size_t f = 0; f < nf; ++f) {
+    if (!next_content(lines, fields))
+      throw InputError(
+          name, lines.line_number(),
+          "file ends after " + std::to_string(f) + " of " + std::to_string(nf) + " faces");
+    const std::size_t n = lines.line_number();
+    const auto count = count_field(fields[0], name, n, "face corner count");
+    if (fields.size() < static_cast<std::size_t>(count) + 1)
+      throw InputError(name, n,
+                       "face announces " + std::to_string(count) + " corners but has " +
+                           std::to_string(fields.size() - 1));
+    corners.clear();
+    for (long long c = 1; c <= count; ++c) {
+      const auto index = parse_integer(fields[static_cast<std::size_t>(c)]);
+      if (!index)
+        throw InputError(name, n,
+                         "vertex index '" + std::string(fields[static_cast<std::size_t>(c)]) +
+                             "' is not an integer");
+      corners.push_back(*index);
+    }
+    append_polygon(corners, nv, mesh.triangles, name, n);
+  }
+  return mesh;
+}
+
+void write_off(std::ostream& out, const SurfaceMesh& mesh) {
+  std::string text = "OFF\n" + std::to_string(mesh.points.size()) + " " +
+                     std::to_string(mesh.triangles.size()) + " 0\n";
+  for (const Vec3& p : mesh.points) {
+    append_number(text, p.x());
+    text += ' ';
+    append_number(text, p.y());
+    text += ' ';
+    append_number(text, p.z());
+    text += '\n';
+    if (text.size() > (1 << 20)) {
+      out << text;
+      text.clear();
+    }
+  }
+  for (const Triangle& t : mesh.triangles) {
+    text += "3 " + std::to_string(t[0]) + " " + std::to_string(t[1]) + " " + std::to_string(t[2]) +
+            "\n";
+    if (text.size() > (1 << 20)) {
+      out << text;
+      text.clear();
+    }
+  }
+  out << text;
+}
+
+}  // namespace molmesh

@@ -1,0 +1,41 @@
+#include "molmesh/io/sphere_list.hpp"
+
+#include <cmath>
+
+#include "molmesh/core/error.hpp"
+#include "molmesh/io/text_input.hpp"
+
+namespace molmesh {
+
+std::vector<Sphere> read_spheres(const std::filesystem::path& path) {
+  using namespace io_detail;
+  const std::string name = path.string();
+  const std::string text = read_file_contents(path);
+  std::vector<Sphere> spheres;
+  LineCursor lines(text);
+  std::string_view line;
+  while (lines.next(line)) {
+    if (const auto hash = line.find('#'); hash != std::string_view::npos)
+      line = line.substr(0, hash);
+    const auto f = split_fields(line, true);
+    if (f.empty()) continue;
+    const std::size_t n = lines.line_number();
+    if (f.size() != 4)
+      throw InputError(
+          name, n,
+          "expected 'x y z radius' (4 numbers), found " + std::to_string(f.size()) + " fields");
+    double v[4];
+    for (std::size_t k = 0; k < 4; ++k) {
+      const auto value = parse_double(f[k]);
+      if (!value || !std::isfinite(*value))
+        throw InputError(name, n, "'" + std::string(f[k]) + "' is not a finite number");
+      v[k] = *value;
+    }
+    if (v[3] < 0.0) throw InputError(name, n, "negative sphere radius " + std::string(f[3]));
+    spheres.push_back({Vec3(v[0], v[1], v[2]), v[3]});
+  }
+  if (spheres.empty()) throw InputError(name, "no spheres (expected lines 'x y z radius')");
+  return spheres;
+}
+
+}  // namespace molmesh
