@@ -1,6 +1,9 @@
 #pragma once
 // Small geometric vocabulary shared by every stage. Positions are in Ångström.
 #include <Eigen/Core>
+// Vec3::cross and friends are declared in Core but defined in Geometry; without it every
+// user of cross() fails to link.
+#include <Eigen/Geometry>
 #include <array>
 
 namespace molmesh {
