@@ -1,6 +1,9 @@
 #include "molmesh/volume/fast_blur.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <limits>
 #include <numbers>
 #include <sstream>
 #include <string>
@@ -123,10 +126,98 @@ void fast_blur_onto(const Atoms& atoms, const FastBlurOptions& options, Grid& gr
     // sqrt(2 pi) sigma per axis, i.e. sqrt(2 pi) sigma / h samples.
     scale *= std::sqrt(2.0 * std::numbers::pi * sigma2) / h;
   }
-  recursive_gaussian_filter(grid, filter_sigma);
+  recursive_gaussian_filter(grid, filter_sigma, options.design);
   reporter.progress("fast blur", 0.95);
   for (double& v : grid.values) v *= scale;
   reporter.progress("fast blur", 1.0);
+}
+
+namespace {
+
+bool reaches_boundary(const Grid& grid, double isovalue) {
+  const auto [nx, ny, nz] = grid.dims;
+  for (int k = 0; k < nz; ++k) {
+    for (int j = 0; j < ny; ++j) {
+      if (k == 0 || k == nz - 1 || j == 0 || j == ny - 1) {
+        for (int i = 0; i < nx; ++i) {
+          if (grid.at(i, j, k) >= isovalue) return true;
+        }
+      } else if (grid.at(0, j, k) >= isovalue || grid.at(nx - 1, j, k) >= isovalue) {
+        return true;
+      }
+    }
+  }
+  return false;
+}
+
+}  // namespace
+
+Grid fast_blur(const Atoms& atoms, const BlurOptions& options, SplatMethod splat_method,
+               const Reporter& reporter) {
+  const double h = options.spacing;
+  if (!(h > 0.0) || !std::isfinite(h)) {
+    throw Error("grid spacing must be a positive number of Å (got " + std::to_string(h) + ")");
+  }
+  if (!(options.isovalue > 0.0) || !std::isfinite(options.isovalue)) {
+    throw Error("the isovalue must be positive (got " + std::to_string(options.isovalue) + ")");
+  }
+  if (options.margin_cells < 0) throw Error("the grid margin must not be negative");
+  FastBlurOptions fast;
+  fast.kappa = constant_decay_rate(atoms, options.blobbyness);
+  fast.splat = splat_method;
+
+  bool per_atom = false;
+  Vec3 lo = Vec3::Constant(std::numeric_limits<double>::max());
+  Vec3 hi = Vec3::Constant(std::numeric_limits<double>::lowest());
+  for (std::size_t n = 0; n < atoms.size(); ++n) {
+    const Atom& atom = atoms[n];
+    if (!(atom.radius > 0.0)) continue;
+    if (!atom.center.allFinite()) {
+      throw Error("atom " + std::to_string(n + 1) + " has a non-finite position");
+    }
+    per_atom = per_atom || atom.blobbyness.has_value();
+    // Eq. 2 alone reaches the isovalue t where d^2 = r^2 + ln(t) / kappa.
+    const double d2 = atom.radius * atom.radius + std::log(options.isovalue) / fast.kappa;
+    const double reach = std::max(atom.radius, d2 > 0.0 ? std::sqrt(d2) : 0.0);
+    lo = lo.cwiseMin(atom.center - Vec3::Constant(reach));
+    hi = hi.cwiseMax(atom.center + Vec3::Constant(reach));
+  }
+  if (per_atom) {
+    reporter.warn(
+        "the fast blur uses one decay rate for all atoms; per-atom blobbyness is ignored "
+        "(use the exact blur to honour it)");
+  }
+
+  int margin = options.margin_cells;
+  for (int attempt = 0;; ++attempt) {
+    Grid grid;
+    grid.spacing = Vec3::Constant(h);
+    for (int axis = 0; axis < 3; ++axis) {
+      // The same lattice as blur_atoms (origin on multiples of h), so both can be compared
+      // sample by sample.
+      const double first = std::floor(lo[axis] / h) - margin;
+      const double last = std::ceil(hi[axis] / h) + margin;
+      if (last - first + 1 > 1e6)
+        throw Error("the grid would be absurdly large; check coordinates");
+      grid.origin[axis] = first * h;
+      grid.dims[axis] = static_cast<int>(last - first) + 1;
+    }
+    const double samples = double(grid.dims[0]) * grid.dims[1] * grid.dims[2];
+    if (samples > double(std::numeric_limits<std::int32_t>::max()) / 4) {
+      throw Error("the grid of " + std::to_string(grid.dims[0]) + " x " +
+                  std::to_string(grid.dims[1]) + " x " + std::to_string(grid.dims[2]) +
+                  " samples is too large; use a coarser --spacing");
+    }
+    fast_blur_onto(atoms, fast, grid, reporter);
+    if (!reaches_boundary(grid, options.isovalue)) return grid;
+    if (attempt == 4) {
+      reporter.warn(
+          "the blurred field reaches the isovalue on the grid boundary; the surface is closed "
+          "along the boundary");
+      return grid;
+    }
+    margin = 2 * margin + 4;
+  }
 }
 
 }  // namespace molmesh

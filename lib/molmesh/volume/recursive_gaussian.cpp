@@ -82,11 +82,72 @@ std::array<std::array<double, 3>, 3> triggs_sdika_matrix(double gain,
   return m;
 }
 
+// Deriche's fit of exp(-x^2 / 2) for x >= 0 (sigma = 1):
+//   (1.68 cos(0.6318 x) + 3.735 sin(0.6318 x)) e^(-1.783 x)
+//   - (0.6803 cos(1.997 x) + 0.2598 sin(1.997 x)) e^(-1.723 x).
+// a cos(w x) + b sin(w x) = Re[(a - i b) e^(i w x)], so each term is one complex pole.
+constexpr double kDericheA[2][2] = {{1.68, 3.735}, {-0.6803, -0.2598}};
+constexpr double kDericheOmega[2] = {0.6318, 1.997};
+constexpr double kDericheDecay[2] = {1.783, 1.723};
+
+RecursiveGaussianCoefficients deriche_coefficients(double sigma) {
+  RecursiveGaussianCoefficients c;
+  c.design = RecursiveGaussianDesign::kDeriche4;
+  c.sigma = sigma;
+  Complex sum = 0.0;
+  for (int j = 0; j < 2; ++j) {
+    c.residue[j] = Complex(kDericheA[j][0], -kDericheA[j][1]);
+    c.pole[j] = std::exp(Complex(-kDericheDecay[j], kDericheOmega[j]) / sigma);
+    // sum over all n of residue * pole^|n|
+    sum += c.residue[j] * (1.0 + c.pole[j]) / (1.0 - c.pole[j]);
+  }
+  // Unit sum on the sampled lattice (the continuous fit's integral is off by ~1e-4 and by
+  // more for small sigma, where sampling matters).
+  for (auto& r : c.residue) r /= sum.real();
+  return c;
+}
+
+// y[n] = sum_k h[k] x[n-k]: the causal part (k >= 0) and the anti-causal part (k < 0) are
+// each a pair of first-order complex recursions over the input.
+void deriche_lines(const RecursiveGaussianCoefficients& c, double* base, std::size_t n,
+                   std::ptrdiff_t stride, std::size_t width, std::vector<Complex>& state,
+                   std::vector<double>& out) {
+  state.assign(2 * width, Complex(0.0, 0.0));
+  out.assign(n * width, 0.0);
+  const Complex p0 = c.pole[0];
+  const Complex p1 = c.pole[1];
+  const Complex r0 = c.residue[0];
+  const Complex r1 = c.residue[1];
+  Complex* s0 = state.data();
+  Complex* s1 = s0 + width;
+  for (std::size_t m = 0; m < n; ++m) {
+    const double* row = base + static_cast<std::ptrdiff_t>(m) * stride;
+    double* o = out.data() + m * width;
+    for (std::size_t l = 0; l < width; ++l) {
+      s0[l] = row[l] + p0 * s0[l];
+      s1[l] = row[l] + p1 * s1[l];
+      o[l] = (r0 * s0[l]).real() + (r1 * s1[l]).real();
+    }
+  }
+  std::fill(state.begin(), state.end(), Complex(0.0, 0.0));
+  for (std::size_t m = n; m-- > 0;) {
+    // s now holds sum_{k>=1} pole^k x[m+k]; x beyond the end is zero, so rest is exact.
+    double* row = base + static_cast<std::ptrdiff_t>(m) * stride;
+    double* o = out.data() + m * width;
+    for (std::size_t l = 0; l < width; ++l) {
+      const double x = row[l];
+      row[l] = o[l] + (r0 * s0[l]).real() + (r1 * s1[l]).real();
+      s0[l] = p0 * (x + s0[l]);
+      s1[l] = p1 * (x + s1[l]);
+    }
+  }
+}
+
 // Filters `width` interleaved lines at once: sample m of line l is at
 // base[m*stride + l]. Rows of contiguous lines keep the y and z passes cache friendly and
 // let the compiler vectorise over l.
-void filter_lines(const RecursiveGaussianCoefficients& c, double* base, std::size_t n,
-                  std::ptrdiff_t stride, std::size_t width, std::vector<double>& scratch) {
+void yvv_lines(const RecursiveGaussianCoefficients& c, double* base, std::size_t n,
+               std::ptrdiff_t stride, std::size_t width, std::vector<double>& scratch) {
   scratch.assign(3 * width, 0.0);
   double* p1 = scratch.data();
   double* p2 = p1 + width;
@@ -128,15 +189,31 @@ void filter_lines(const RecursiveGaussianCoefficients& c, double* base, std::siz
   }
 }
 
+struct LineScratch {
+  std::vector<double> real;
+  std::vector<Complex> complex;
+};
+
+void filter_lines(const RecursiveGaussianCoefficients& c, double* base, std::size_t n,
+                  std::ptrdiff_t stride, std::size_t width, LineScratch& scratch) {
+  if (c.design == RecursiveGaussianDesign::kDeriche4) {
+    deriche_lines(c, base, n, stride, width, scratch.complex, scratch.real);
+  } else {
+    yvv_lines(c, base, n, stride, width, scratch.real);
+  }
+}
+
 }  // namespace
 
-RecursiveGaussianCoefficients recursive_gaussian_coefficients(double sigma) {
+RecursiveGaussianCoefficients recursive_gaussian_coefficients(double sigma,
+                                                              RecursiveGaussianDesign design) {
   if (!std::isfinite(sigma) || sigma < kMinRecursiveSigma) {
     throw Error("recursive Gaussian: sigma of " + std::to_string(sigma) +
                 " grid samples is below the filter's accurate range (>= " +
                 std::to_string(kMinRecursiveSigma) +
                 "); use a finer grid spacing or the exact blur");
   }
+  if (design == RecursiveGaussianDesign::kDeriche4) return deriche_coefficients(sigma);
   const double q = solve_scale(sigma);
   const Complex pc = 1.0 / std::pow(kBasePoleComplex, 1.0 / q);
   const double pr = 1.0 / std::pow(kBasePoleReal, 1.0 / q);
@@ -144,6 +221,7 @@ RecursiveGaussianCoefficients recursive_gaussian_coefficients(double sigma) {
   const double sum_c = 2.0 * pc.real();
   const double prod_c = std::norm(pc);
   RecursiveGaussianCoefficients c;
+  c.design = RecursiveGaussianDesign::kYoungVanVliet3;
   c.sigma = sigma;
   c.feedback = {sum_c + pr, -(prod_c + sum_c * pr), prod_c * pr};
   c.gain = 1.0 - c.feedback[0] - c.feedback[1] - c.feedback[2];
@@ -153,11 +231,11 @@ RecursiveGaussianCoefficients recursive_gaussian_coefficients(double sigma) {
 
 void recursive_gaussian_line(const RecursiveGaussianCoefficients& c, double* data, std::size_t n,
                              std::ptrdiff_t stride) {
-  std::vector<double> scratch;
+  LineScratch scratch;
   filter_lines(c, data, n, stride, 1, scratch);
 }
 
-void recursive_gaussian_filter(Grid& grid, const Vec3& sigma) {
+void recursive_gaussian_filter(Grid& grid, const Vec3& sigma, RecursiveGaussianDesign design) {
   const auto nx = static_cast<std::size_t>(grid.dims[0]);
   const auto ny = static_cast<std::size_t>(grid.dims[1]);
   const auto nz = static_cast<std::size_t>(grid.dims[2]);
@@ -171,30 +249,30 @@ void recursive_gaussian_filter(Grid& grid, const Vec3& sigma) {
   const auto sxy = static_cast<std::ptrdiff_t>(nx * ny);
 
   if (sigma.x() > 0.0) {
-    const auto c = recursive_gaussian_coefficients(sigma.x() / grid.spacing.x());
+    const auto c = recursive_gaussian_coefficients(sigma.x() / grid.spacing.x(), design);
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, ny * nz),
                       [&](const tbb::blocked_range<std::size_t>& r) {
-                        std::vector<double> scratch;
+                        LineScratch scratch;
                         for (std::size_t line = r.begin(); line != r.end(); ++line) {
                           filter_lines(c, data + line * nx, nx, 1, 1, scratch);
                         }
                       });
   }
   if (sigma.y() > 0.0) {
-    const auto c = recursive_gaussian_coefficients(sigma.y() / grid.spacing.y());
+    const auto c = recursive_gaussian_coefficients(sigma.y() / grid.spacing.y(), design);
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, nz),
                       [&](const tbb::blocked_range<std::size_t>& r) {
-                        std::vector<double> scratch;
+                        LineScratch scratch;
                         for (std::size_t k = r.begin(); k != r.end(); ++k) {
                           filter_lines(c, data + k * nx * ny, ny, sx, nx, scratch);
                         }
                       });
   }
   if (sigma.z() > 0.0) {
-    const auto c = recursive_gaussian_coefficients(sigma.z() / grid.spacing.z());
+    const auto c = recursive_gaussian_coefficients(sigma.z() / grid.spacing.z(), design);
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, ny),
                       [&](const tbb::blocked_range<std::size_t>& r) {
-                        std::vector<double> scratch;
+                        LineScratch scratch;
                         for (std::size_t j = r.begin(); j != r.end(); ++j) {
                           filter_lines(c, data + j * nx, nz, sxy, nx, scratch);
                         }
