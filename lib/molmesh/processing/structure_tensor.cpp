@@ -51,10 +51,13 @@ StructureTensor structure_tensor_of_normals(std::span<const Vec3> normals) {
 
 std::vector<StructureTensor> structure_tensors(const SurfaceMesh& mesh, int rings) {
   if (rings < 1) rings = 1;
-  const std::vector<Vec3> normals = vertex_normals(mesh);
   const VertexAdjacency faces = vertex_faces(mesh);
-  const VertexAdjacency neighbours = vertex_neighbours(mesh, faces);
-  const VertexAdjacency ring = k_rings(mesh, neighbours, rings);
+  return structure_tensors(mesh, k_rings(mesh, vertex_neighbours(mesh, faces), rings));
+}
+
+std::vector<StructureTensor> structure_tensors(const SurfaceMesh& mesh,
+                                               const VertexAdjacency& ring) {
+  const std::vector<Vec3> normals = vertex_normals(mesh);
   std::vector<StructureTensor> tensors(mesh.points.size());
   tbb::parallel_for(std::size_t{0}, mesh.points.size(), [&](std::size_t v) {
     Eigen::Matrix3d tensor = Eigen::Matrix3d::Zero();

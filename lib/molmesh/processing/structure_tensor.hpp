@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "molmesh/core/geometry.hpp"
+#include "molmesh/processing/vertex_rings.hpp"
 #include "molmesh/surface/surface_mesh.hpp"
 
 namespace molmesh {
@@ -31,5 +32,10 @@ StructureTensor structure_tensor_of_normals(std::span<const Vec3> normals);
 // The tensor at every vertex over its `rings`-ring (the vertex itself included), from the
 // unit vertex normals of vertex_normals.hpp. rings >= 1. Parallel, thread-count independent.
 std::vector<StructureTensor> structure_tensors(const SurfaceMesh& mesh, int rings = 2);
+
+// Same, over precomputed neighbourhoods (k_rings of vertex_rings.hpp), for callers that
+// recompute tensors on a mesh whose connectivity does not change.
+std::vector<StructureTensor> structure_tensors(const SurfaceMesh& mesh,
+                                               const VertexAdjacency& neighbourhoods);
 
 }  // namespace molmesh

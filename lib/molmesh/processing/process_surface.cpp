@@ -1,0 +1,91 @@
+#include "molmesh/processing/process_surface.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <numeric>
+
+#include "molmesh/core/error.hpp"
+#include "molmesh/processing/coarsen.hpp"
+#include "molmesh/processing/edge_flips.hpp"
+
+namespace molmesh {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+std::string format_t0(double t0) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%g", t0);
+  return buffer;
+}
+
+class StageTimer {
+ public:
+  StageTimer(ProcessingResult& result, bool record) : result_(result), record_(record) {}
+  template <class F>
+  void run(const std::string& name, F&& body) {
+    const auto start = Clock::now();
+    body();
+    ProcessingStage stage;
+    stage.name = name;
+    stage.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    if (record_) stage.stats = compute_surface_stats(result_.mesh);
+    result_.stages.push_back(std::move(stage));
+  }
+
+ private:
+  ProcessingResult& result_;
+  bool record_;
+};
+
+}  // namespace
+
+ProcessingResult process_surface(const SurfaceMesh& input, const ProcessingOptions& options,
+                                 const Reporter& reporter) {
+  if (options.rings < 1) throw Error("--rings must be at least 1");
+  for (double t0 : options.t0) {
+    if (!(t0 >= 0) || !std::isfinite(t0)) throw Error("coarsening threshold T0 must be >= 0");
+  }
+  ProcessingResult result;
+  result.mesh = input;
+  result.provenance.resize(input.points.size());
+  std::iota(result.provenance.begin(), result.provenance.end(), 0);
+  StageTimer timer(result, options.record_stages);
+
+  ImproveOptions improve = options.improve;
+  improve.rings = options.rings;
+  FlipOptions flips;
+
+  auto improve_and_flip = [&](const std::string& suffix) {
+    timer.run("improve" + suffix, [&] { improve_angles(result.mesh, improve, reporter); });
+    if (options.flips) {
+      timer.run("flip" + suffix, [&] { flip_edges_for_angles(result.mesh, flips); });
+    }
+  };
+
+  improve_and_flip("");
+  for (double t0 : options.t0) {
+    const std::string tag = " T0=" + format_t0(t0);
+    timer.run("coarsen" + tag, [&] {
+      CoarsenOptions co;
+      co.t0 = t0;
+      co.alpha = options.alpha;
+      co.beta = options.beta;
+      co.rings = options.rings;
+      co.keep_spheres = options.keep_spheres;
+      CoarsenResult coarse = coarsen(result.mesh, co, reporter);
+      for (int& p : coarse.provenance) p = result.provenance[p];
+      result.mesh = std::move(coarse.mesh);
+      result.provenance = std::move(coarse.provenance);
+    });
+    timer.run("smooth" + tag, [&] { smooth_normals(result.mesh, options.smoothing, reporter); });
+    improve_and_flip(tag);
+  }
+  for (int round = 0; round < options.cleanup_rounds; ++round) {
+    improve_and_flip(" cleanup " + std::to_string(round + 1));
+  }
+  return result;
+}
+
+}  // namespace molmesh

@@ -1,0 +1,50 @@
+#pragma once
+// The surface post-processing of GAMer (Fig. 1), in one call: quality improvement →
+// feature-adaptive coarsening → normal-based smoothing → quality improvement, repeated once
+// per coarsening threshold, with edge flips where they raise angles, and a final
+// worst-triangle cleanup. Every stage is timed and measured.
+#include <string>
+#include <vector>
+
+#include "molmesh/core/geometry.hpp"
+#include "molmesh/core/reporter.hpp"
+#include "molmesh/processing/improve_angles.hpp"
+#include "molmesh/processing/normal_smoothing.hpp"
+#include "molmesh/surface/surface_mesh.hpp"
+#include "molmesh/surface/surface_stats.hpp"
+
+namespace molmesh {
+
+struct ProcessingOptions {
+  // One coarsening round per threshold T0 (Eq. 6), in order; empty = improve only.
+  std::vector<double> t0 = {0.2};
+  double alpha = 1.0;                // Eq. 6 exponent on the longest incident edge
+  double beta = 1.0;                 // Eq. 6 exponent on λ2/λ1
+  int rings = 2;                     // k-ring of the structure tensor (improvement and coarsening)
+  std::vector<Sphere> keep_spheres;  // no vertex inside is deleted by coarsening
+  ImproveOptions improve;            // improve.rings is overwritten by `rings`
+  NormalSmoothingOptions smoothing;
+  bool flips = true;  // edge flips for angles after each improvement
+  // Final passes of improvement + flips aimed at the worst triangles (see docs/processing.md).
+  int cleanup_rounds = 3;
+  bool record_stages = true;  // compute SurfaceStats after every stage
+};
+
+struct ProcessingStage {
+  std::string name;  // "improve", "coarsen T0=0.2", "flip", "smooth", "cleanup"
+  double seconds = 0.0;
+  SurfaceStats stats;  // of the mesh after this stage (empty if !record_stages)
+};
+
+struct ProcessingResult {
+  SurfaceMesh mesh;
+  std::vector<int> provenance;  // output vertex -> input vertex
+  std::vector<ProcessingStage> stages;
+};
+
+// Throws molmesh::Error for an input that is not a closed oriented manifold (coarsening
+// needs one) or for invalid options. Deterministic and independent of the thread count.
+ProcessingResult process_surface(const SurfaceMesh& input, const ProcessingOptions& options,
+                                 const Reporter& reporter = {});
+
+}  // namespace molmesh

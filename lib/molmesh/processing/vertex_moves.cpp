@@ -1,0 +1,120 @@
+#include "molmesh/processing/vertex_moves.hpp"
+
+#include <tbb/parallel_for.h>
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <numbers>
+
+namespace molmesh {
+
+std::vector<std::vector<std::int32_t>> colour_classes(const VertexAdjacency& neighbours) {
+  const std::size_t n = neighbours.vertex_count();
+  std::vector<int> colour(n, -1);
+  std::vector<std::vector<std::int32_t>> classes;
+  std::vector<char> used;
+  for (std::size_t v = 0; v < n; ++v) {
+    used.assign(classes.size() + 1, 0);
+    for (std::int32_t u : neighbours.of(v)) {
+      if (colour[u] >= 0) used[colour[u]] = 1;
+    }
+    int c = 0;
+    while (used[c]) ++c;
+    colour[v] = c;
+    if (static_cast<std::size_t>(c) == classes.size()) classes.emplace_back();
+    classes[c].push_back(static_cast<std::int32_t>(v));
+  }
+  return classes;
+}
+
+double triangle_quality_deg(const Vec3& a, const Vec3& b, const Vec3& c) {
+  const Vec3 ab = b - a, bc = c - b, ca = a - c;
+  const double lab = ab.norm(), lbc = bc.norm(), lca = ca.norm();
+  if (!(lab > 0 && lbc > 0 && lca > 0)) return 0.0;
+  const double ca_ = std::clamp(-ca.dot(ab) / (lca * lab), -1.0, 1.0);  // angle at a
+  const double cb = std::clamp(-ab.dot(bc) / (lab * lbc), -1.0, 1.0);   // at b
+  const double cc = std::clamp(-bc.dot(ca) / (lbc * lca), -1.0, 1.0);   // at c
+  const double cos_small = std::max({ca_, cb, cc});
+  const double cos_large = std::min({ca_, cb, cc});
+  constexpr double deg = 180.0 / std::numbers::pi;
+  const double smallest = std::acos(cos_small) * deg;
+  const double largest = std::acos(cos_large) * deg;
+  return std::min(smallest, 0.5 * (180.0 - largest));
+}
+
+double star_quality_deg(const Vec3& x, std::span<const std::int32_t> ring,
+                        const std::vector<Vec3>& points) {
+  double q = 180.0;
+  const std::size_t m = ring.size();
+  for (std::size_t i = 0; i < m; ++i) {
+    q = std::min(q, triangle_quality_deg(x, points[ring[i]], points[ring[(i + 1) % m]]));
+  }
+  return q;
+}
+
+namespace {
+
+bool star_valid(const Vec3& x, const Vec3& y, std::span<const std::int32_t> ring,
+                const std::vector<Vec3>& points, double cos_turn, double min_area_ratio) {
+  const std::size_t m = ring.size();
+  // The star's mean normal (before the move): every new triangle must face its side, so the
+  // star stays a graph over its tangent plane and cannot fold.
+  Vec3 mean = Vec3::Zero();
+  for (std::size_t i = 0; i < m; ++i) {
+    mean += (points[ring[i]] - x).cross(points[ring[(i + 1) % m]] - x);
+  }
+  for (std::size_t i = 0; i < m; ++i) {
+    const Vec3& a = points[ring[i]];
+    const Vec3& b = points[ring[(i + 1) % m]];
+    const Vec3 before = (a - x).cross(b - x);
+    const Vec3 after = (a - y).cross(b - y);
+    const double lb = before.norm(), la = after.norm();
+    if (!(la > min_area_ratio * lb) || !(la > 0)) return false;
+    if (after.dot(mean) <= 0) return false;
+    // A sliver's normal is noise (that is what the move is there to repair), so the turn
+    // limit applies only to triangles whose height is at least a tenth of their base.
+    const double base2 =
+        std::max({(a - x).squaredNorm(), (b - x).squaredNorm(), (b - a).squaredNorm()});
+    const bool sliver = lb < 0.1 * base2;
+    if (!sliver && after.dot(before) < cos_turn * la * lb) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+std::optional<Vec3> accept_move(const Vec3& x, const Vec3& target,
+                                std::span<const std::int32_t> ring, const std::vector<Vec3>& points,
+                                const MoveLimits& limits) {
+  const double cos_turn = std::cos(limits.max_normal_turn_deg * std::numbers::pi / 180.0);
+  const double q_old = limits.require_quality ? star_quality_deg(x, ring, points) : 0.0;
+  Vec3 step = target - x;
+  for (int attempt = 0; attempt <= limits.max_halvings; ++attempt, step *= 0.5) {
+    const Vec3 y = x + step;
+    if (!star_valid(x, y, ring, points, cos_turn, limits.min_area_ratio)) continue;
+    if (limits.require_quality && star_quality_deg(y, ring, points) < q_old) continue;
+    return y;
+  }
+  return std::nullopt;
+}
+
+std::size_t sweep_vertices(std::vector<Vec3>& points, const VertexAdjacency& rings,
+                           const std::vector<std::vector<std::int32_t>>& colours,
+                           const std::function<std::optional<Vec3>(std::size_t)>& move) {
+  std::atomic<std::size_t> moved{0};
+  for (const auto& members : colours) {
+    tbb::parallel_for(std::size_t{0}, members.size(), [&](std::size_t k) {
+      const auto v = static_cast<std::size_t>(members[k]);
+      if (rings.of(v).size() < 3) return;
+      if (const auto y = move(v)) {
+        points[v] = *y;
+        moved.fetch_add(1, std::memory_order_relaxed);
+      }
+    });
+  }
+  return moved.load();
+}
+
+}  // namespace molmesh
