@@ -1,5 +1,6 @@
 #include "molmesh/processing/edge_flips.hpp"
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 #include <numbers>

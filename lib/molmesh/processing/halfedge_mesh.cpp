@@ -1,5 +1,6 @@
 #include "molmesh/processing/halfedge_mesh.hpp"
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <string>
 #include <utility>

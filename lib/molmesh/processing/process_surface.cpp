@@ -57,14 +57,16 @@ ProcessingResult process_surface(const SurfaceMesh& input, const ProcessingOptio
   improve.rings = options.rings;
   FlipOptions flips;
 
-  auto improve_and_flip = [&](const std::string& suffix) {
-    timer.run("improve" + suffix, [&] { improve_angles(result.mesh, improve, reporter); });
+  auto improve_and_flip = [&](const std::string& suffix, int sweeps) {
+    ImproveOptions pass = improve;
+    pass.sweeps = sweeps;
+    timer.run("improve" + suffix, [&] { improve_angles(result.mesh, pass, reporter); });
     if (options.flips) {
       timer.run("flip" + suffix, [&] { flip_edges_for_angles(result.mesh, flips); });
     }
   };
 
-  improve_and_flip("");
+  improve_and_flip("", options.initial_sweeps);
   for (double t0 : options.t0) {
     const std::string tag = " T0=" + format_t0(t0);
     timer.run("coarsen" + tag, [&] {
@@ -80,10 +82,10 @@ ProcessingResult process_surface(const SurfaceMesh& input, const ProcessingOptio
       result.provenance = std::move(coarse.provenance);
     });
     timer.run("smooth" + tag, [&] { smooth_normals(result.mesh, options.smoothing, reporter); });
-    improve_and_flip(tag);
+    improve_and_flip(tag, improve.sweeps);
   }
   for (int round = 0; round < options.cleanup_rounds; ++round) {
-    improve_and_flip(" cleanup " + std::to_string(round + 1));
+    improve_and_flip(" cleanup " + std::to_string(round + 1), improve.sweeps);
   }
   return result;
 }

@@ -23,6 +23,10 @@ struct ProcessingOptions {
   int rings = 2;                     // k-ring of the structure tensor (improvement and coarsening)
   std::vector<Sphere> keep_spheres;  // no vertex inside is deleted by coarsening
   ImproveOptions improve;            // improve.rings is overwritten by `rings`
+  // Sweeps of the first improvement, on the dense raw mesh: it only has to straighten the
+  // marching-cubes slivers before coarsening; more sweeps cost time and change nothing
+  // measurable after coarsening (docs/processing.md).
+  int initial_sweeps = 3;
   NormalSmoothingOptions smoothing;
   bool flips = true;  // edge flips for angles after each improvement
   // Final passes of improvement + flips aimed at the worst triangles (see docs/processing.md).

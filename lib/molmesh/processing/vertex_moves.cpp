@@ -29,29 +29,37 @@ std::vector<std::vector<std::int32_t>> colour_classes(const VertexAdjacency& nei
   return classes;
 }
 
-double triangle_quality_deg(const Vec3& a, const Vec3& b, const Vec3& c) {
+double triangle_quality_cos(const Vec3& a, const Vec3& b, const Vec3& c) {
   const Vec3 ab = b - a, bc = c - b, ca = a - c;
-  const double lab = ab.norm(), lbc = bc.norm(), lca = ca.norm();
-  if (!(lab > 0 && lbc > 0 && lca > 0)) return 0.0;
-  const double ca_ = std::clamp(-ca.dot(ab) / (lca * lab), -1.0, 1.0);  // angle at a
-  const double cb = std::clamp(-ab.dot(bc) / (lab * lbc), -1.0, 1.0);   // at b
-  const double cc = std::clamp(-bc.dot(ca) / (lbc * lca), -1.0, 1.0);   // at c
-  const double cos_small = std::max({ca_, cb, cc});
-  const double cos_large = std::min({ca_, cb, cc});
-  constexpr double deg = 180.0 / std::numbers::pi;
-  const double smallest = std::acos(cos_small) * deg;
-  const double largest = std::acos(cos_large) * deg;
-  return std::min(smallest, 0.5 * (180.0 - largest));
+  const double lab2 = ab.squaredNorm(), lbc2 = bc.squaredNorm(), lca2 = ca.squaredNorm();
+  if (!(lab2 > 0 && lbc2 > 0 && lca2 > 0)) return 1.0;
+  const double ca_ = -ca.dot(ab) / std::sqrt(lca2 * lab2);  // cosine of the angle at a
+  const double cb = -ab.dot(bc) / std::sqrt(lab2 * lbc2);   // at b
+  const double cc = -bc.dot(ca) / std::sqrt(lbc2 * lca2);   // at c
+  const double cos_small = std::clamp(std::max({ca_, cb, cc}), -1.0, 1.0);
+  const double cos_large = std::clamp(std::min({ca_, cb, cc}), -1.0, 1.0);
+  // (180° - θmax)/2 has cosine sqrt((1 - cos θmax)/2) (half-angle formula), so the quality
+  // min(θmin, (180° - θmax)/2) is the arccosine of the larger of the two cosines.
+  return std::max(cos_small, std::sqrt(0.5 * (1.0 - cos_large)));
+}
+
+double triangle_quality_deg(const Vec3& a, const Vec3& b, const Vec3& c) {
+  return std::acos(triangle_quality_cos(a, b, c)) * 180.0 / std::numbers::pi;
+}
+
+double star_quality_cos(const Vec3& x, std::span<const std::int32_t> ring,
+                        const std::vector<Vec3>& points) {
+  double q = -1.0;
+  const std::size_t m = ring.size();
+  for (std::size_t i = 0; i < m; ++i) {
+    q = std::max(q, triangle_quality_cos(x, points[ring[i]], points[ring[(i + 1) % m]]));
+  }
+  return q;
 }
 
 double star_quality_deg(const Vec3& x, std::span<const std::int32_t> ring,
                         const std::vector<Vec3>& points) {
-  double q = 180.0;
-  const std::size_t m = ring.size();
-  for (std::size_t i = 0; i < m; ++i) {
-    q = std::min(q, triangle_quality_deg(x, points[ring[i]], points[ring[(i + 1) % m]]));
-  }
-  return q;
+  return std::acos(star_quality_cos(x, ring, points)) * 180.0 / std::numbers::pi;
 }
 
 namespace {
@@ -89,12 +97,12 @@ std::optional<Vec3> accept_move(const Vec3& x, const Vec3& target,
                                 std::span<const std::int32_t> ring, const std::vector<Vec3>& points,
                                 const MoveLimits& limits) {
   const double cos_turn = std::cos(limits.max_normal_turn_deg * std::numbers::pi / 180.0);
-  const double q_old = limits.require_quality ? star_quality_deg(x, ring, points) : 0.0;
+  const double q_old = limits.require_quality ? star_quality_cos(x, ring, points) : 1.0;
   Vec3 step = target - x;
   for (int attempt = 0; attempt <= limits.max_halvings; ++attempt, step *= 0.5) {
     const Vec3 y = x + step;
     if (!star_valid(x, y, ring, points, cos_turn, limits.min_area_ratio)) continue;
-    if (limits.require_quality && star_quality_deg(y, ring, points) < q_old) continue;
+    if (limits.require_quality && star_quality_cos(y, ring, points) > q_old) continue;
     return y;
   }
   return std::nullopt;

@@ -23,9 +23,13 @@ std::vector<std::vector<std::int32_t>> colour_classes(const VertexAdjacency& nei
 // Equals the smallest angle unless the triangle is obtuse beyond 180 - 2·min; 60 for an
 // equilateral triangle. Penalises both needles and flat (caps) triangles.
 double triangle_quality_deg(const Vec3& a, const Vec3& b, const Vec3& c);
+// The cosine of that quality (smaller is better), computed without inverse trigonometry.
+double triangle_quality_cos(const Vec3& a, const Vec3& b, const Vec3& c);
 
 // Worst quality over the fan (x, ring[i], ring[i+1]).
 double star_quality_deg(const Vec3& x, std::span<const std::int32_t> ring,
+                        const std::vector<Vec3>& points);
+double star_quality_cos(const Vec3& x, std::span<const std::int32_t> ring,
                         const std::vector<Vec3>& points);
 
 struct MoveLimits {

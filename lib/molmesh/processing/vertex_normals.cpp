@@ -5,6 +5,8 @@
 #include <Eigen/Geometry>
 #include <cmath>
 
+#include "molmesh/processing/vertex_rings.hpp"
+
 namespace molmesh {
 
 std::vector<Vec3> face_normals(const SurfaceMesh& mesh) {
@@ -21,23 +23,24 @@ std::vector<Vec3> face_normals(const SurfaceMesh& mesh) {
 
 std::vector<Vec3> vertex_normals(const SurfaceMesh& mesh) {
   const std::vector<Vec3> fn = face_normals(mesh);
-  // Accumulated sequentially over faces so the sum order (and thus the result bits) is
-  // fixed whatever the thread count.
+  const VertexAdjacency faces = vertex_faces(mesh);
   std::vector<Vec3> normals(mesh.points.size(), Vec3::Zero());
-  for (std::size_t f = 0; f < mesh.triangles.size(); ++f) {
-    const Triangle& t = mesh.triangles[f];
-    for (int k = 0; k < 3; ++k) {
-      const Vec3& p = mesh.points[t[k]];
+  // Per vertex, summed over its faces in increasing index: parallel and yet the same bits
+  // whatever the thread count.
+  tbb::parallel_for(std::size_t{0}, mesh.points.size(), [&](std::size_t v) {
+    Vec3 n = Vec3::Zero();
+    const Vec3& p = mesh.points[v];
+    for (std::int32_t f : faces.of(v)) {
+      const Triangle& t = mesh.triangles[f];
+      const int k = t[0] == static_cast<int>(v) ? 0 : (t[1] == static_cast<int>(v) ? 1 : 2);
       const Vec3 a = mesh.points[t[(k + 1) % 3]] - p;
       const Vec3 b = mesh.points[t[(k + 2) % 3]] - p;
       const double angle = std::atan2(a.cross(b).norm(), a.dot(b));
-      normals[t[k]] += angle * fn[f];
+      n += angle * fn[f];
     }
-  }
-  for (Vec3& n : normals) {
     const double len = n.norm();
-    n = len > 0 ? Vec3(n / len) : Vec3::Zero();
-  }
+    normals[v] = len > 0 ? Vec3(n / len) : Vec3::Zero();
+  });
   return normals;
 }
 
