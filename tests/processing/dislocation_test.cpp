@@ -1,0 +1,84 @@
+#include "molmesh/processing/dislocation.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <random>
+
+#include "molmesh/processing/self_intersection.hpp"
+#include "molmesh/processing/triangle_bvh.hpp"
+#include "processing/improve_meshes.hpp"
+
+namespace molmesh {
+namespace {
+
+TEST(ClosestPoint, RegionsOfATriangle) {
+  const Vec3 a(0, 0, 0), b(1, 0, 0), c(0, 1, 0);
+  EXPECT_TRUE(closest_point_on_triangle(Vec3(0.2, 0.2, 3), a, b, c).isApprox(Vec3(0.2, 0.2, 0)));
+  EXPECT_TRUE(closest_point_on_triangle(Vec3(-1, -1, 0), a, b, c).isApprox(a));
+  EXPECT_TRUE(closest_point_on_triangle(Vec3(2, -1, 1), a, b, c).isApprox(b));
+  EXPECT_TRUE(closest_point_on_triangle(Vec3(0.5, -2, 0), a, b, c).isApprox(Vec3(0.5, 0, 0)));
+  EXPECT_TRUE(closest_point_on_triangle(Vec3(1, 1, 0), a, b, c).isApprox(Vec3(0.5, 0.5, 0)));
+}
+
+TEST(TriangleBvh, NearestMatchesBruteForce) {
+  const SurfaceMesh sphere = improve_test::icosphere(3, 5.0);
+  const TriangleBvh bvh(sphere);
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(-8, 8);
+  for (int i = 0; i < 300; ++i) {
+    const Vec3 p(u(rng), u(rng), u(rng));
+    double best = std::numeric_limits<double>::infinity();
+    for (const Triangle& t : sphere.triangles) {
+      const Vec3 q = closest_point_on_triangle(p, sphere.points[t[0]], sphere.points[t[1]],
+                                               sphere.points[t[2]]);
+      best = std::min(best, (q - p).norm());
+    }
+    EXPECT_DOUBLE_EQ(bvh.nearest(p).distance, best);
+  }
+}
+
+TEST(Dislocation, ScaledSphereIsOffsetByTheScale) {
+  const SurfaceMesh reference = improve_test::icosphere(4, 10.0);
+  SurfaceMesh moved = reference;
+  for (Vec3& p : moved.points) p *= 1.01;  // 0.1 Å outwards: vertices are 0.1 Å off planes
+  const Dislocation d = measure_dislocation(moved, reference);
+  EXPECT_NEAR(d.max, 0.1, 1e-9);
+  EXPECT_NEAR(d.mean, 0.1, 1e-9);
+  const Dislocation self = measure_dislocation(reference, reference);
+  EXPECT_EQ(self.max, 0.0);
+  // Vertices of a coarser sphere lie on the sphere, hence outside the fine polyhedron's
+  // chords: distance positive but below the fine mesh's sagitta.
+  SurfaceMesh coarse_sphere = improve_test::icosphere(2, 10.0);
+  const Eigen::Matrix3d rotation = Eigen::AngleAxisd(0.3, Vec3(1, 2, 3).normalized()).matrix();
+  for (Vec3& p : coarse_sphere.points) p = rotation * p;
+  const Dislocation coarse = measure_dislocation(coarse_sphere, reference);
+  EXPECT_GT(coarse.max, 0.0);
+  EXPECT_LT(coarse.max, 0.05);
+}
+
+TEST(SelfIntersection, CleanSphereHasNone) {
+  EXPECT_EQ(count_self_intersections(improve_test::icosphere(3, 1.0)), 0u);
+}
+
+TEST(SelfIntersection, FindsTwoInterpenetratingSpheres) {
+  SurfaceMesh a = improve_test::icosphere(2, 1.0);
+  const SurfaceMesh b = improve_test::icosphere(2, 1.0, Vec3(1.2, 0.1, 0.05));
+  const int offset = static_cast<int>(a.points.size());
+  a.points.insert(a.points.end(), b.points.begin(), b.points.end());
+  for (Triangle t : b.triangles) {
+    for (int& v : t) v += offset;
+    a.triangles.push_back(t);
+  }
+  EXPECT_GT(count_self_intersections(a), 10u);
+}
+
+TEST(SelfIntersection, FindsAVertexPushedThroughTheOppositeSide) {
+  SurfaceMesh sphere = improve_test::icosphere(2, 1.0);
+  sphere.points[0] = -1.3 * sphere.points[0];  // a spike through the far side
+  EXPECT_GT(count_self_intersections(sphere), 0u);
+}
+
+}  // namespace
+}  // namespace molmesh
