@@ -1,6 +1,7 @@
 #pragma once
 // Small closed meshes built in code for the processing tests: an icosphere (smooth, uniform)
 // and a finely gridded box (flat faces meeting at sharp 90° ridges).
+#include <Eigen/Geometry>
 #include <array>
 #include <cmath>
 #include <map>
