@@ -1,0 +1,70 @@
+#include "molmesh/pipeline/surface_pipeline.hpp"
+
+#include <chrono>
+#include <string>
+#include <utility>
+
+#include "molmesh/core/error.hpp"
+#include "molmesh/surface/components.hpp"
+#include "molmesh/surface/marching_cubes.hpp"
+
+namespace molmesh {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// Marching cubes, cavity removal, then processing (unless raw).
+void extract_and_process(const Grid& grid, const SurfacePipelineOptions& options,
+                         const Reporter& reporter, SurfacePipelineResult& result) {
+  auto start = Clock::now();
+  SurfaceMesh raw = marching_cubes(grid, options.isovalue, reporter);
+  const double mc_seconds = seconds_since(start);
+  if (raw.triangles.empty())
+    throw Error("the isosurface at isovalue " + std::to_string(options.isovalue) +
+                " is empty; lower the isovalue or check the input");
+  result.stages.push_back({"marching cubes", mc_seconds, compute_surface_stats(raw)});
+
+  if (options.min_cavity_volume > 0.0) {
+    start = Clock::now();
+    std::size_t removed = 0;
+    raw = drop_small_cavities(raw, options.min_cavity_volume, &removed);
+    if (raw.triangles.empty())
+      throw Error("removing cavities left no surface (is the surface inside out?)");
+    result.stages.push_back(
+        {"cavities", seconds_since(start),
+         removed > 0 ? std::optional(compute_surface_stats(raw)) : result.stages.back().stats});
+  }
+
+  result.raw = std::move(raw);
+  // The processing stages (quality improvement, coarsening, smoothing) run here on the
+  // non-raw path; until they exist the final surface is the raw one.
+  result.surface = result.raw;
+}
+
+}  // namespace
+
+SurfacePipelineResult surface_from_atoms(const Atoms& atoms, const SurfacePipelineOptions& options,
+                                         const Reporter& reporter) {
+  SurfacePipelineResult result;
+  BlurOptions blur = options.blur;
+  blur.isovalue = options.isovalue;
+  const auto start = Clock::now();
+  const Grid grid = blur_atoms(atoms, blur, reporter);
+  result.stages.push_back({"blur", seconds_since(start), std::nullopt});
+  result.grid_dims = grid.dims;
+  extract_and_process(grid, options, reporter, result);
+  return result;
+}
+
+SurfacePipelineResult surface_from_grid(const Grid& grid, const SurfacePipelineOptions& options,
+                                        const Reporter& reporter) {
+  SurfacePipelineResult result;
+  extract_and_process(grid, options, reporter, result);
+  return result;
+}
+
+}  // namespace molmesh
