@@ -69,7 +69,8 @@ SmoluchowskiResult solve_smoluchowski(const TetMesh& mesh, std::span<const doubl
       ++result.absorbing_vertices;
     } else if (bits[v] & bulk) {
       dirichlet[v] = 1;
-      values[static_cast<Eigen::Index>(v)] = std::exp(bw(v));  // c = 1 -> s = exp(beta W)
+      // Bulk in Boltzmann equilibrium: c = exp(-beta W), i.e. s = 1 (= c_bulk where W = 0).
+      values[static_cast<Eigen::Index>(v)] = 1.0;
       ++result.bulk_vertices;
     }
   }

@@ -1,7 +1,9 @@
 #pragma once
 // Steady-state Smoluchowski diffusion around a molecule (GAMer §4.4, as in SMOL):
 //   div D (grad c + c grad(beta W)) = 0  in the solvent,
-//   c = c_bulk on the outer sphere, c = 0 on absorbing faces, zero flux elsewhere.
+//   c = c_bulk exp(-beta W) on the outer sphere (the bulk in Boltzmann equilibrium, which
+//   is c_bulk where the potential has decayed), c = 0 on absorbing faces, zero flux
+//   elsewhere.
 // With the Slotboom variable s = c exp(beta W) the operator is symmetric:
 //   div (D exp(-beta W) grad s) = 0,
 // solved with P1 elements and multigrid-preconditioned CG. The rate constant is the

@@ -113,7 +113,7 @@ TEST(P1Convergence, ShellLaplaceNodalErrorFallsAsHSquared) {
   std::vector<double> hs, errors;
   for (int level = 0; level < 4; ++level) {
     double h = 0.0;
-    errors.push_back(shell_laplace_error(1 + level, 1 << level, h));
+    errors.push_back(shell_laplace_error(1 + level, 2 << level, h));
     hs.push_back(h);
   }
   // Least-squares slope of log(error) against log(h).
