@@ -12,9 +12,9 @@ struct TetStats {
   std::size_t vertices = 0;
   std::size_t tetrahedra = 0;
   std::size_t boundary_faces = 0;
-  std::map<int, std::size_t> tets_per_region;       // region marker → count
-  std::map<int, std::size_t> faces_per_marker;      // boundary marker → count
-  std::map<int, std::size_t> vertices_per_marker;   // vertex marker → count
+  std::map<int, std::size_t> tets_per_region;      // region marker → count
+  std::map<int, std::size_t> faces_per_marker;     // boundary marker → count
+  std::map<int, std::size_t> vertices_per_marker;  // vertex marker → count
   double min_dihedral_deg = 0.0;
   double max_dihedral_deg = 0.0;
   double min_volume = 0.0;  // Å³; > 0 for a valid mesh

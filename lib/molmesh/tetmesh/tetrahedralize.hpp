@@ -41,18 +41,18 @@ struct TetMeshOptions {
 };
 
 struct TetMeshReport {
-  std::size_t atoms_given = 0;        // atoms passed in
-  std::size_t atoms_as_nodes = 0;     // distinct atom centres that are mesh vertices
-  std::size_t coincident_atoms = 0;   // atoms whose centre duplicates an earlier one
-  std::size_t atoms_outside = 0;      // centres outside the meshed interior (not nodes)
-  std::size_t surface_vertices = 0;   // molecular-surface vertices given
+  std::size_t atoms_given = 0;             // atoms passed in
+  std::size_t atoms_as_nodes = 0;          // distinct atom centres that are mesh vertices
+  std::size_t coincident_atoms = 0;        // atoms whose centre duplicates an earlier one
+  std::size_t atoms_outside = 0;           // centres outside the meshed interior (not nodes)
+  std::size_t surface_vertices = 0;        // molecular-surface vertices given
   std::size_t surface_steiner_points = 0;  // vertices TetGen added on the surface (0 with Y)
   std::size_t outer_sphere_vertices = 0;
-  double molecule_size = 0.0;         // Å
-  double outer_radius = 0.0;          // Å (0 for an interior mesh)
-  std::string tetgen_switches;        // the switches TetGen ran with
-  double seconds = 0.0;               // TetGen wall time
-  double total_seconds = 0.0;         // including input preparation and classification
+  double molecule_size = 0.0;   // Å
+  double outer_radius = 0.0;    // Å (0 for an interior mesh)
+  std::string tetgen_switches;  // the switches TetGen ran with
+  double seconds = 0.0;         // TetGen wall time
+  double total_seconds = 0.0;   // including input preparation and classification
 };
 
 // Throws molmesh::Error when the surface is empty or not closed enough for TetGen, when the

@@ -1,0 +1,453 @@
+#include "molmesh/tetmesh/tetrahedralize.hpp"
+
+#include <tetgen.h>
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <bit>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <numbers>
+#include <sstream>
+#include <unordered_map>
+#include <unordered_set>
+
+#include "molmesh/core/error.hpp"
+#include "molmesh/tetmesh/markers.hpp"
+#include "molmesh/tetmesh/molecule_size.hpp"
+#include "molmesh/tetmesh/outer_sphere.hpp"
+
+namespace molmesh {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point t0) {
+  return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+struct FaceKey {
+  int a, b, c;  // sorted
+  bool operator==(const FaceKey&) const = default;
+};
+FaceKey face_key(int a, int b, int c) {
+  if (a > b) std::swap(a, b);
+  if (b > c) std::swap(b, c);
+  if (a > b) std::swap(a, b);
+  return {a, b, c};
+}
+struct FaceKeyHash {
+  std::size_t operator()(const FaceKey& k) const {
+    std::uint64_t h = static_cast<std::uint32_t>(k.a);
+    h = h * 0x9E3779B97F4A7C15ull ^ static_cast<std::uint32_t>(k.b);
+    h = h * 0x9E3779B97F4A7C15ull ^ static_cast<std::uint32_t>(k.c);
+    return static_cast<std::size_t>(h ^ (h >> 29));
+  }
+};
+
+struct PointKeyHash {
+  std::size_t operator()(const std::array<std::uint64_t, 3>& k) const {
+    std::uint64_t h = k[0];
+    h = h * 0x9E3779B97F4A7C15ull ^ k[1];
+    h = h * 0x9E3779B97F4A7C15ull ^ k[2];
+    return static_cast<std::size_t>(h ^ (h >> 31));
+  }
+};
+// Exact bit pattern: TetGen copies input coordinates unchanged, so an atom centre that
+// became a node is found by equality.
+std::array<std::uint64_t, 3> point_key(const Vec3& p) {
+  return {std::bit_cast<std::uint64_t>(p.x() + 0.0), std::bit_cast<std::uint64_t>(p.y() + 0.0),
+          std::bit_cast<std::uint64_t>(p.z() + 0.0)};
+}
+
+// Generalised winding number of a closed, outward-oriented surface at q: 1 inside, 0
+// outside (cavities, whose faces point into the cavity, count as outside). Van Oosterom &
+// Strackee's solid angle formula.
+double winding_number(const SurfaceMesh& s, const Vec3& q) {
+  double total = 0.0;
+  for (const auto& t : s.triangles) {
+    const Vec3 a = s.points[t[0]] - q, b = s.points[t[1]] - q, c = s.points[t[2]] - q;
+    const double la = a.norm(), lb = b.norm(), lc = c.norm();
+    const double num = a.dot(b.cross(c));
+    const double den = la * lb * lc + a.dot(b) * lc + b.dot(c) * la + c.dot(a) * lb;
+    total += 2.0 * std::atan2(num, den);
+  }
+  return total / (4.0 * std::numbers::pi);
+}
+
+std::string tetgen_error_message(int code) {
+  switch (code) {
+    case 1:
+      return "TetGen ran out of memory";
+    case 2:
+      return "TetGen hit an internal error";
+    case 3:
+      return "the surface intersects itself (TetGen found self-intersecting facets); run the "
+             "surface quality improvement, or check the input surface";
+    case 4:
+      return "the surface has a feature much smaller than the mesh (TetGen: very small input "
+             "feature size); improve or coarsen the surface";
+    case 5:
+      return "two surface facets are nearly coplanar and overlapping (TetGen); improve the "
+             "surface";
+    case 10:
+      return "TetGen rejected the input (an invalid facet or point)";
+    default:
+      return "TetGen failed with code " + std::to_string(code);
+  }
+}
+
+void check_closed(const SurfaceMesh& s) {
+  std::unordered_map<std::uint64_t, int> uses;
+  uses.reserve(s.triangles.size() * 2);
+  const int n = static_cast<int>(s.points.size());
+  for (const auto& t : s.triangles) {
+    for (int k = 0; k < 3; ++k) {
+      const int a = t[k], b = t[(k + 1) % 3];
+      if (a < 0 || a >= n)
+        throw Error("surface triangle refers to vertex " + std::to_string(a) + " of " +
+                    std::to_string(n));
+      if (a == b) throw Error("surface has a degenerate triangle (repeated vertex)");
+      const auto lo = static_cast<std::uint64_t>(std::min(a, b));
+      const auto hi = static_cast<std::uint64_t>(std::max(a, b));
+      ++uses[lo << 32 | hi];
+    }
+  }
+  std::size_t open = 0;
+  for (const auto& [edge, count] : uses)
+    if (count % 2 != 0) ++open;
+  if (open > 0)
+    throw Error("the molecular surface is not closed (" + std::to_string(open) +
+                " edges belong to an odd number of triangles); a tetrahedral mesh needs a "
+                "watertight surface");
+}
+
+std::string format_number(double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.6g", v);
+  return buf;
+}
+
+}  // namespace
+
+TetMesh tetrahedralize(const SurfaceMesh& surface, const Atoms& atoms,
+                       const TetMeshOptions& options, const Reporter& reporter,
+                       TetMeshReport* report_out) {
+  const auto t_start = Clock::now();
+  TetMeshReport report;
+  if (surface.triangles.empty() || surface.points.empty())
+    throw Error("cannot tetrahedralize an empty surface");
+  check_closed(surface);
+  reporter.progress("tetrahedralize", 0.0);
+
+  const bool want_interior = options.domain != Domain::exterior;
+  const bool want_exterior = options.domain != Domain::interior;
+  const MoleculeExtent extent =
+      atoms.empty() ? molecule_extent(surface.points) : molecule_extent(atoms);
+  report.molecule_size = extent.size;
+  report.surface_vertices = surface.points.size();
+  report.atoms_given = atoms.size();
+
+  SurfaceMesh sphere;
+  if (want_exterior) {
+    double radius = 0.0;
+    if (options.outer_radius) {
+      radius = *options.outer_radius;
+    } else {
+      if (!(options.sphere_ratio > 0.0)) throw Error("the sphere ratio must be positive");
+      radius = options.sphere_ratio * extent.size;
+      if (!(radius > 0.0))
+        throw Error(
+            "the molecule has zero size (a single atom?): give the outer sphere "
+            "radius explicitly (--outer-radius)");
+    }
+    double surface_reach = 0.0;
+    for (const auto& p : surface.points)
+      surface_reach = std::max(surface_reach, (p - extent.centroid).norm());
+    // 5 % slack: the icosphere's flat faces sit slightly inside the true sphere.
+    if (!(radius > surface_reach * 1.05))
+      throw Error("the outer sphere (radius " + format_number(radius) +
+                  " Å) does not enclose the molecular surface (reaching " +
+                  format_number(surface_reach) + " Å from the centre); increase it");
+    sphere = icosphere(extent.centroid, radius, options.outer_sphere_subdivisions);
+    report.outer_radius = radius;
+    report.outer_sphere_vertices = sphere.points.size();
+  }
+
+  // Surface facets first (their indices are kept by TetGen), then the sphere.
+  const int n_surface = static_cast<int>(surface.points.size());
+  const int n_sphere = static_cast<int>(sphere.points.size());
+  const int n_in = n_surface + n_sphere;
+  const int n_faces = static_cast<int>(surface.triangles.size() + sphere.triangles.size());
+
+  tetgenio in;
+  in.firstnumber = 0;
+  in.numberofpoints = n_in;
+  in.pointlist = new REAL[static_cast<std::size_t>(n_in) * 3];
+  for (int i = 0; i < n_in; ++i) {
+    const Vec3& p = i < n_surface ? surface.points[i] : sphere.points[i - n_surface];
+    for (int d = 0; d < 3; ++d) in.pointlist[3 * i + d] = p[d];
+  }
+  in.numberoffacets = n_faces;
+  in.facetlist = new tetgenio::facet[static_cast<std::size_t>(n_faces)];
+  in.facetmarkerlist = new int[static_cast<std::size_t>(n_faces)];
+  for (int f = 0; f < n_faces; ++f) {
+    const bool on_sphere = f >= static_cast<int>(surface.triangles.size());
+    const Triangle& t =
+        on_sphere ? sphere.triangles[f - surface.triangles.size()] : surface.triangles[f];
+    const int offset = on_sphere ? n_surface : 0;
+    tetgenio::facet& facet = in.facetlist[f];
+    tetgenio::init(&facet);
+    facet.numberofpolygons = 1;
+    facet.polygonlist = new tetgenio::polygon[1];
+    tetgenio::init(&facet.polygonlist[0]);
+    facet.polygonlist[0].numberofvertices = 3;
+    facet.polygonlist[0].vertexlist = new int[3]{t[0] + offset, t[1] + offset, t[2] + offset};
+    int marker = on_sphere ? markers::kOuterSphere : markers::kMolecularSurface;
+    if (!on_sphere && !options.active_site.empty()) {
+      bool inside = true;
+      for (int k = 0; k < 3 && inside; ++k) {
+        const Vec3& p = surface.points[t[k]];
+        inside = std::any_of(options.active_site.begin(), options.active_site.end(),
+                             [&](const Sphere& s) { return s.contains(p); });
+      }
+      if (inside) marker = markers::kActiveSite;
+    }
+    in.facetmarkerlist[f] = marker;
+  }
+
+  // Atom centres become nodes of the molecule's part: TetGen inserts them (-i) after the
+  // boundary is recovered. Duplicates would be rejected by TetGen, so merge them first.
+  tetgenio addin;
+  std::vector<Vec3> atom_nodes;
+  if (want_interior && !atoms.empty()) {
+    std::unordered_set<std::array<std::uint64_t, 3>, PointKeyHash> seen;
+    std::unordered_set<std::array<std::uint64_t, 3>, PointKeyHash> surface_keys;
+    for (const auto& p : surface.points) surface_keys.insert(point_key(p));
+    for (const auto& a : atoms) {
+      const auto key = point_key(a.center);
+      if (!seen.insert(key).second || surface_keys.count(key)) {
+        ++report.coincident_atoms;
+        continue;
+      }
+      atom_nodes.push_back(a.center);
+    }
+    addin.firstnumber = 0;
+    addin.numberofpoints = static_cast<int>(atom_nodes.size());
+    addin.pointlist = new REAL[atom_nodes.size() * 3];
+    for (std::size_t i = 0; i < atom_nodes.size(); ++i)
+      for (int d = 0; d < 3; ++d) addin.pointlist[3 * i + d] = atom_nodes[i][d];
+  }
+
+  // p: PLC; Y: no Steiner points on the given facets; M: keep coplanar neighbours as
+  // separate facets (merging them would let TetGen re-triangulate the surface); z: 0-based;
+  // n: neighbours (to split regions); Q: quiet.
+  std::string switches;
+  if (options.tetgen_switches.empty()) {
+    if (!(options.max_radius_edge_ratio > 0.0) || options.min_dihedral_deg < 0.0)
+      throw Error("tetgen quality bounds must be positive");
+    switches = "pYM";
+    switches += "q" + format_number(options.max_radius_edge_ratio) + "/" +
+                format_number(options.min_dihedral_deg);
+    if (options.max_volume) {
+      if (!(*options.max_volume > 0.0)) throw Error("maximum tetrahedron volume must be positive");
+      switches += "a" + format_number(*options.max_volume);
+    }
+  } else {
+    switches = options.tetgen_switches;
+    if (switches.find_first_of("rRwmk") != std::string::npos)
+      throw Error("--tetgen-switches: r, R, w, m and k are not supported (molmesh meshes a PLC)");
+    if (switches.find('p') == std::string::npos) switches.insert(0, "p");
+  }
+  for (char c : std::string("znQ"))
+    if (switches.find(c) == std::string::npos) switches += c;
+  if (!atom_nodes.empty() && switches.find('i') == std::string::npos) switches += 'i';
+  report.tetgen_switches = switches;
+
+  tetgenbehavior behavior;
+  std::string switch_buffer = switches;
+  if (!behavior.parse_commandline(switch_buffer.data()))
+    throw Error("TetGen rejected the switches \"" + switches + "\"");
+  tetgenio out;
+  const auto t_tetgen = Clock::now();
+  try {
+    ::tetrahedralize(&behavior, &in, &out, atom_nodes.empty() ? nullptr : &addin, nullptr);
+  } catch (int code) {
+    throw Error("tetrahedral meshing failed: " + tetgen_error_message(code));
+  }
+  report.seconds = seconds_since(t_tetgen);
+  reporter.progress("tetrahedralize", 0.8);
+
+  const int n_out_points = out.numberofpoints;
+  const int n_tets = out.numberoftetrahedra;
+  if (n_tets <= 0 || out.tetrahedronlist == nullptr || out.neighborlist == nullptr)
+    throw Error("TetGen produced no tetrahedra");
+
+  // Faces TetGen kept on the input facets, with their markers: they separate regions.
+  std::unordered_map<FaceKey, int, FaceKeyHash> facet_marker;
+  facet_marker.reserve(static_cast<std::size_t>(out.numberoftrifaces) * 2);
+  for (int f = 0; f < out.numberoftrifaces; ++f) {
+    const int* v = out.trifacelist + 3 * f;
+    facet_marker[face_key(v[0], v[1], v[2])] =
+        out.trifacemarkerlist ? out.trifacemarkerlist[f] : markers::kMolecularSurface;
+  }
+
+  // Tets as given by TetGen, reoriented positively; neighbour k stays opposite corner k.
+  std::vector<Tetrahedron> tets(static_cast<std::size_t>(n_tets));
+  std::vector<std::array<int, 4>> nbr(static_cast<std::size_t>(n_tets));
+  auto point_at = [&](int i) {
+    return Vec3(out.pointlist[3 * i], out.pointlist[3 * i + 1], out.pointlist[3 * i + 2]);
+  };
+  for (int t = 0; t < n_tets; ++t) {
+    Tetrahedron tet{out.tetrahedronlist[4 * t], out.tetrahedronlist[4 * t + 1],
+                    out.tetrahedronlist[4 * t + 2], out.tetrahedronlist[4 * t + 3]};
+    std::array<int, 4> nb{out.neighborlist[4 * t], out.neighborlist[4 * t + 1],
+                          out.neighborlist[4 * t + 2], out.neighborlist[4 * t + 3]};
+    const Vec3 a = point_at(tet[0]);
+    if ((point_at(tet[1]) - a).dot((point_at(tet[2]) - a).cross(point_at(tet[3]) - a)) < 0.0) {
+      std::swap(tet[2], tet[3]);
+      std::swap(nb[2], nb[3]);
+    }
+    tets[t] = tet;
+    nbr[t] = nb;
+  }
+  auto face_of = [&](const Tetrahedron& t, int k) {
+    // Opposite corner k, ordered so the normal points out of the tet.
+    static constexpr int kFace[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
+    return Triangle{t[kFace[k][0]], t[kFace[k][1]], t[kFace[k][2]]};
+  };
+
+  // Regions: tets connected across faces that are not on an input facet. Each is classified
+  // by the winding number of the molecular surface at one tet's centroid, so cavities
+  // (inside the surface but outside the molecule) come out as solvent.
+  std::vector<int> component(static_cast<std::size_t>(n_tets), -1);
+  std::vector<int> component_region;
+  std::vector<int> stack;
+  for (int seed = 0; seed < n_tets; ++seed) {
+    if (component[seed] >= 0) continue;
+    const int id = static_cast<int>(component_region.size());
+    component[seed] = id;
+    stack.assign(1, seed);
+    while (!stack.empty()) {
+      const int t = stack.back();
+      stack.pop_back();
+      for (int k = 0; k < 4; ++k) {
+        const int n = nbr[t][k];
+        if (n < 0 || component[n] >= 0) continue;
+        const Triangle f = face_of(tets[t], k);
+        if (facet_marker.count(face_key(f[0], f[1], f[2]))) continue;
+        component[n] = id;
+        stack.push_back(n);
+      }
+    }
+    const Tetrahedron& st = tets[seed];
+    const Vec3 centroid =
+        (point_at(st[0]) + point_at(st[1]) + point_at(st[2]) + point_at(st[3])) / 4.0;
+    component_region.push_back(winding_number(surface, centroid) > 0.5 ? markers::kMoleculeRegion
+                                                                       : markers::kSolventRegion);
+  }
+
+  auto keep_region = [&](int region) {
+    return region == markers::kMoleculeRegion ? want_interior : want_exterior;
+  };
+
+  // Compact: kept tets and the points they use, in TetGen's order.
+  TetMesh mesh;
+  std::vector<int> new_point(static_cast<std::size_t>(n_out_points), -1);
+  std::vector<int> new_tet(static_cast<std::size_t>(n_tets), -1);
+  for (int t = 0; t < n_tets; ++t) {
+    if (!keep_region(component_region[component[t]])) continue;
+    for (int v : tets[t]) new_point[v] = 0;
+  }
+  for (int i = 0; i < n_out_points; ++i) {
+    if (new_point[i] < 0) continue;
+    new_point[i] = static_cast<int>(mesh.points.size());
+    mesh.points.push_back(point_at(i));
+  }
+  for (int t = 0; t < n_tets; ++t) {
+    const int region = component_region[component[t]];
+    if (!keep_region(region)) continue;
+    new_tet[t] = static_cast<int>(mesh.tetrahedra.size());
+    const Tetrahedron& tet = tets[t];
+    mesh.tetrahedra.push_back(
+        {new_point[tet[0]], new_point[tet[1]], new_point[tet[2]], new_point[tet[3]]});
+    mesh.cell_markers.push_back(region);
+  }
+  if (mesh.tetrahedra.empty())
+    throw Error("no tetrahedra lie in the requested domain (is the surface oriented outward?)");
+
+  // Boundary faces of the kept set, and (full meshes) the molecule/solvent interface once,
+  // oriented out of the molecule.
+  for (int t = 0; t < n_tets; ++t) {
+    if (new_tet[t] < 0) continue;
+    const int region = component_region[component[t]];
+    for (int k = 0; k < 4; ++k) {
+      const int n = nbr[t][k];
+      const bool boundary = n < 0 || new_tet[n] < 0;
+      const bool interface = !boundary && region == markers::kMoleculeRegion &&
+                             component_region[component[n]] != region;
+      if (!boundary && !interface) continue;
+      const Triangle f = face_of(tets[t], k);
+      const auto it = facet_marker.find(face_key(f[0], f[1], f[2]));
+      mesh.boundary_faces.push_back({new_point[f[0]], new_point[f[1]], new_point[f[2]]});
+      mesh.boundary_face_markers.push_back(it == facet_marker.end() ? markers::kNoMarker
+                                                                    : it->second);
+    }
+  }
+
+  // Vertex markers: active site wins over molecular surface; the sphere is separate.
+  auto priority = [](int m) {
+    switch (m) {
+      case markers::kActiveSite:
+        return 3;
+      case markers::kMolecularSurface:
+        return 2;
+      case markers::kOuterSphere:
+        return 1;
+      default:
+        return 0;
+    }
+  };
+  mesh.vertex_markers.assign(mesh.points.size(), markers::kNoMarker);
+  for (std::size_t f = 0; f < mesh.boundary_faces.size(); ++f) {
+    const int m = mesh.boundary_face_markers[f];
+    for (int v : mesh.boundary_faces[f])
+      if (priority(m) > priority(mesh.vertex_markers[v])) mesh.vertex_markers[v] = m;
+  }
+
+  // Vertices on the molecular surface that were not given: Steiner points (0 with Y).
+  for (int i = n_in; i < n_out_points; ++i) {
+    const int v = new_point[i];
+    if (v >= 0 && (mesh.vertex_markers[v] == markers::kMolecularSurface ||
+                   mesh.vertex_markers[v] == markers::kActiveSite))
+      ++report.surface_steiner_points;
+  }
+
+  if (!atom_nodes.empty()) {
+    std::unordered_set<std::array<std::uint64_t, 3>, PointKeyHash> kept;
+    kept.reserve(mesh.points.size() * 2);
+    for (const auto& p : mesh.points) kept.insert(point_key(p));
+    for (const auto& c : atom_nodes) {
+      if (kept.count(point_key(c)))
+        ++report.atoms_as_nodes;
+      else
+        ++report.atoms_outside;
+    }
+    if (report.atoms_outside > 0)
+      reporter.warn(std::to_string(report.atoms_outside) +
+                    " atom centres lie outside the molecular surface (or too close to it) and "
+                    "are not mesh nodes");
+  }
+  if (report.surface_steiner_points > 0)
+    reporter.warn("TetGen added " + std::to_string(report.surface_steiner_points) +
+                  " points on the molecular surface");
+
+  report.total_seconds = seconds_since(t_start);
+  reporter.progress("tetrahedralize", 1.0);
+  if (report_out) *report_out = report;
+  return mesh;
+}
+
+}  // namespace molmesh
