@@ -1,6 +1,7 @@
 #include "molmesh/io/atoms_structure.hpp"
 
 #include <cctype>
+#include <cmath>
 #include <gemmi/cif.hpp>
 #include <gemmi/mmcif.hpp>
 #include <gemmi/modify.hpp>
@@ -15,15 +16,29 @@ namespace {
 
 // Serial number -> line, so that later problems (an element without a radius) can point
 // at the record. The first record with a serial wins; gemmi keeps records in file order.
-std::unordered_map<int, std::size_t> pdb_atom_lines(const std::string& contents) {
+// Also checks the coordinate columns strictly: gemmi reads "-7.1x8" as -7.1 without a word.
+std::unordered_map<int, std::size_t> scan_pdb_records(const std::string& contents,
+                                                      const std::string& name) {
   std::unordered_map<int, std::size_t> lines;
   io_detail::LineCursor cursor(contents);
   std::string_view line;
   while (cursor.next(line)) {
     if (line.substr(0, 6) != "ATOM  " && line.substr(0, 6) != "HETATM") continue;
-    if (line.size() < 11) continue;
+    const std::size_t n = cursor.line_number();
+    if (line.size() < 54)
+      throw InputError(name, n, "ATOM/HETATM record too short for coordinates (columns 31-54)");
+    for (std::size_t k = 0; k < 3; ++k) {
+      const std::string_view column = io_detail::trim(line.substr(30 + 8 * k, 8));
+      const auto value = io_detail::parse_double(column);
+      if (!value)
+        throw InputError(name, n,
+                         std::string(1, "xyz"[k]) + " coordinate '" + std::string(column) +
+                             "' (columns " + std::to_string(31 + 8 * k) + "-" +
+                             std::to_string(38 + 8 * k) + ") is not a number");
+      if (!std::isfinite(*value)) throw InputError(name, n, "coordinates are not finite numbers");
+    }
     const auto serial = io_detail::parse_integer(io_detail::trim(line.substr(6, 5)));
-    if (serial) lines.emplace(static_cast<int>(*serial), cursor.line_number());
+    if (serial) lines.emplace(static_cast<int>(*serial), n);
   }
   return lines;
 }
@@ -32,6 +47,8 @@ std::unordered_map<int, std::size_t> pdb_atom_lines(const std::string& contents)
 
 StructureAtoms parse_structure(const std::string& contents, const std::string& name, bool mmcif,
                                const Reporter& reporter) {
+  const auto lines =
+      mmcif ? std::unordered_map<int, std::size_t>{} : scan_pdb_records(contents, name);
   gemmi::Structure st;
   try {
     if (mmcif) {
@@ -70,7 +87,6 @@ StructureAtoms parse_structure(const std::string& contents, const std::string& n
     reporter.warn(name + ": " + std::to_string(dropped) + " of " + std::to_string(alternative) +
                   " alternative-location atoms dropped (the first conformer is kept)");
 
-  const auto lines = mmcif ? std::unordered_map<int, std::size_t>{} : pdb_atom_lines(contents);
   for (const auto& chain : model.chains) {
     for (const auto& residue : chain.residues) {
       for (const auto& a : residue.atoms) {

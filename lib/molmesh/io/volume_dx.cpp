@@ -1,0 +1,177 @@
+#include "molmesh/io/volume_dx.hpp"
+
+#include <cmath>
+#include <vector>
+
+#include "molmesh/core/error.hpp"
+#include "molmesh/io/text_input.hpp"
+
+namespace molmesh {
+
+using namespace io_detail;
+
+Grid parse_dx(std::string_view text, const std::string& name) {
+  LineCursor lines(text);
+  std::string_view line;
+  Grid grid;
+  bool have_counts = false, have_origin = false, have_data = false;
+  int deltas = 0;
+  std::size_t counts_line = 0;
+  std::size_t expected = 0;
+  while (lines.next(line)) {
+    if (const auto hash = line.find('#'); hash != std::string_view::npos)
+      line = line.substr(0, hash);
+    const auto f = split_fields(line);
+    if (f.empty()) continue;
+    const std::size_t n = lines.line_number();
+    if (f[0] == "object" && f.size() >= 4 && f[2] == "class" && f[3] == "gridpositions") {
+      if (f.size() != 8 || f[4] != "counts")
+        throw InputError(name, n, "expected 'object 1 class gridpositions counts nx ny nz'");
+      for (int k = 0; k < 3; ++k) {
+        const auto c = parse_integer(f[static_cast<std::size_t>(5 + k)]);
+        if (!c || *c < 1 || *c > 1000000)
+          throw InputError(name, n,
+                           "grid count '" + std::string(f[static_cast<std::size_t>(5 + k)]) +
+                               "' is not a positive integer");
+        grid.dims[static_cast<std::size_t>(k)] = static_cast<int>(*c);
+      }
+      have_counts = true;
+      counts_line = n;
+    } else if (f[0] == "origin" || f[0] == "delta") {
+      if (f.size() != 4) throw InputError(name, n, "expected '" + std::string(f[0]) + " x y z'");
+      Vec3 v;
+      for (int k = 0; k < 3; ++k) {
+        const auto value = parse_double(f[static_cast<std::size_t>(1 + k)]);
+        if (!value || !std::isfinite(*value))
+          throw InputError(
+              name, n,
+              "'" + std::string(f[static_cast<std::size_t>(1 + k)]) + "' is not a finite number");
+        v[k] = *value;
+      }
+      if (f[0] == "origin") {
+        grid.origin = v;
+        have_origin = true;
+      } else {
+        if (deltas >= 3) throw InputError(name, n, "more than three delta lines");
+        // The grid type is axis-aligned: delta k must point along axis k.
+        for (int k = 0; k < 3; ++k)
+          if (k != deltas && v[k] != 0.0)
+            throw InputError(name, n,
+                             "rotated or sheared grids are not supported (delta " +
+                                 std::to_string(deltas + 1) + " must be along axis " +
+                                 std::to_string(deltas + 1) + ")");
+        if (!(v[deltas] > 0.0)) throw InputError(name, n, "grid spacing must be positive");
+        grid.spacing[deltas] = v[deltas];
+        ++deltas;
+      }
+    } else if (f[0] == "object" && f.size() >= 4 && f[3] == "array") {
+      if (!have_counts) throw InputError(name, n, "data array before the gridpositions object");
+      if (!have_origin || deltas != 3)
+        throw InputError(name, n, "origin or delta lines missing before the data array");
+      std::optional<long long> items;
+      bool follows = false;
+      for (std::size_t i = 4; i < f.size(); ++i) {
+        if (f[i] == "items" && i + 1 < f.size()) items = parse_integer(f[i + 1]);
+        if (f[i] == "follows") follows = true;
+        if (f[i] == "type" && i + 1 < f.size() && f[i + 1] != "double" && f[i + 1] != "float")
+          throw InputError(
+              name, n,
+              "unsupported data type '" + std::string(f[i + 1]) + "' (expected double or float)");
+        if (f[i] == "rank" && i + 1 < f.size() && f[i + 1] != "0")
+          throw InputError(name, n, "only scalar data (rank 0) is supported");
+        if (f[i] == "binary" || f[i] == "msb" || f[i] == "lsb")
+          throw InputError(name, n, "binary DX data is not supported (expected text data)");
+      }
+      expected = grid.size();
+      if (!items || static_cast<std::size_t>(*items) != expected)
+        throw InputError(name, n,
+                         "items must equal nx*ny*nz = " + std::to_string(expected) +
+                             " (counts on line " + std::to_string(counts_line) + ")");
+      if (!follows)
+        throw InputError(name, n,
+                         "expected 'data follows' (external data files are not supported)");
+      // Values in file order have z fastest; the grid wants x fastest.
+      grid.values.assign(expected, 0.0);
+      const int nx = grid.dims[0], ny = grid.dims[1], nz = grid.dims[2];
+      std::size_t read = 0;
+      while (read < expected && lines.next(line)) {
+        for (const auto field : split_fields(line)) {
+          const auto value = parse_double(field);
+          if (!value)
+            throw InputError(name, lines.line_number(),
+                             "'" + std::string(field) + "' is not a number");
+          if (read >= expected)
+            throw InputError(
+                name, lines.line_number(),
+                "more values than the " + std::to_string(expected) + " items declared");
+          const std::size_t r = read++;
+          const int k = static_cast<int>(r % static_cast<std::size_t>(nz));
+          const int j =
+              static_cast<int>((r / static_cast<std::size_t>(nz)) % static_cast<std::size_t>(ny));
+          const int i =
+              static_cast<int>(r / (static_cast<std::size_t>(nz) * static_cast<std::size_t>(ny)));
+          (void)nx;
+          grid.at(i, j, k) = *value;
+        }
+      }
+      if (read < expected)
+        throw InputError(name, lines.line_number(),
+                         "file ends after " + std::to_string(read) + " of " +
+                             std::to_string(expected) + " values");
+      have_data = true;
+    }
+    // gridconnections, attribute, field and component lines carry nothing we need.
+  }
+  if (!have_counts) throw InputError(name, "not an OpenDX grid: no 'class gridpositions' object");
+  if (!have_data) throw InputError(name, "no 'class array ... data follows' object");
+  return grid;
+}
+
+void write_dx(std::ostream& out, const Grid& grid) {
+  const int nx = grid.dims[0], ny = grid.dims[1], nz = grid.dims[2];
+  std::string text = "# Data written by molmesh (OpenDX scalar field, APBS layout)\n";
+  auto vec = [&text](double a, double b, double c) {
+    append_number(text, a);
+    text += ' ';
+    append_number(text, b);
+    text += ' ';
+    append_number(text, c);
+    text += '\n';
+  };
+  const std::string counts =
+      std::to_string(nx) + " " + std::to_string(ny) + " " + std::to_string(nz);
+  text += "object 1 class gridpositions counts " + counts + "\norigin ";
+  vec(grid.origin.x(), grid.origin.y(), grid.origin.z());
+  text += "delta ";
+  vec(grid.spacing.x(), 0.0, 0.0);
+  text += "delta ";
+  vec(0.0, grid.spacing.y(), 0.0);
+  text += "delta ";
+  vec(0.0, 0.0, grid.spacing.z());
+  text += "object 2 class gridconnections counts " + counts + "\n";
+  text += "object 3 class array type double rank 0 items " + std::to_string(grid.size()) +
+          " data follows\n";
+  // Three values per line in z-fastest order, as APBS writes them.
+  int on_line = 0;
+  for (int i = 0; i < nx; ++i)
+    for (int j = 0; j < ny; ++j)
+      for (int k = 0; k < nz; ++k) {
+        append_number(text, grid.at(i, j, k));
+        text += ++on_line == 3 ? '\n' : ' ';
+        if (on_line == 3) on_line = 0;
+        if (text.size() > (1 << 20)) {
+          out << text;
+          text.clear();
+        }
+      }
+  if (on_line != 0) text.back() = '\n';
+  text +=
+      "attribute \"dep\" string \"positions\"\n"
+      "object \"regular positions regular connections\" class field\n"
+      "component \"positions\" value 1\n"
+      "component \"connections\" value 2\n"
+      "component \"data\" value 3\n";
+  out << text;
+}
+
+}  // namespace molmesh

@@ -1,0 +1,187 @@
+#include <gtest/gtest.h>
+#include <zlib.h>
+
+#include <filesystem>
+#include <map>
+#include <string>
+
+#include "io/io_test_support.hpp"
+#include "molmesh/atoms/radius_table.hpp"
+#include "molmesh/core/error.hpp"
+#include "molmesh/io/radius_table.hpp"
+#include "molmesh/io/read_atoms.hpp"
+
+namespace molmesh {
+namespace {
+
+using test::expect_input_error;
+using test::write_text;
+
+const std::filesystem::path kData = MOLMESH_TEST_DATA_DIR;
+
+TEST(Structure, PdbAtomsGetBondiRadii) {
+  const Atoms atoms = read_atoms(kData / "1a1p.pdb");
+  ASSERT_EQ(atoms.size(), 208u);  // 205 ATOM + the 3-atom NH2 cap (HETATM)
+  std::map<std::string, double> radius_of;
+  for (const Atom& a : atoms) {
+    ASSERT_FALSE(a.element.empty());
+    radius_of[a.element] = a.radius;
+  }
+  EXPECT_DOUBLE_EQ(radius_of["C"], 1.70);
+  EXPECT_DOUBLE_EQ(radius_of["N"], 1.55);
+  EXPECT_DOUBLE_EQ(radius_of["O"], 1.52);
+  EXPECT_DOUBLE_EQ(radius_of["S"], 1.80);
+  EXPECT_DOUBLE_EQ(radius_of["H"], 1.20);
+  // Same first atom as the PQR made from this PDB.
+  EXPECT_EQ(atoms[0].atom_name, "N");
+  EXPECT_EQ(atoms[0].residue_name, "ILE");
+  EXPECT_DOUBLE_EQ(atoms[0].center.x(), -7.158);
+  EXPECT_TRUE(atoms.back().hetatm);
+  EXPECT_EQ(atoms.back().residue_name, "NH2");
+}
+
+TEST(Structure, PdbMatchesItsPqrCoordinates) {
+  AtomReadOptions protein;
+  protein.include_hetatm = false;
+  const Atoms pdb = read_atoms(kData / "1a1p.pdb", protein);
+  const Atoms pqr = read_atoms(kData / "1a1p.pqr");
+  ASSERT_EQ(pdb.size(), 205u);
+  // pdb2pqr rebuilds hydrogens and may flip histidine rings, but keeps every other heavy
+  // atom where it was: each must have a PQR atom of the same residue at the same place.
+  std::size_t heavy = 0, matched = 0;
+  for (const Atom& a : pdb) {
+    if (a.element == "H") continue;
+    ++heavy;
+    bool found = false;
+    for (const Atom& b : pqr)
+      if (b.residue_number == a.residue_number && (b.center - a.center).norm() < 1e-9) found = true;
+    if (found)
+      ++matched;
+    else
+      EXPECT_EQ(a.residue_name, "HIS") << a.atom_name << " " << a.residue_number;
+  }
+  EXPECT_GT(heavy, 90u);
+  EXPECT_GE(matched + 4, heavy);  // at most one flipped ring
+}
+
+TEST(Structure, FiltersHydrogens) {
+  AtomReadOptions heavy;
+  heavy.include_hydrogens = false;
+  const Atoms atoms = read_atoms(kData / "1a1p.pdb", heavy);
+  for (const Atom& a : atoms) EXPECT_NE(a.element, "H");
+  EXPECT_GT(atoms.size(), 90u);
+  EXPECT_LT(atoms.size(), 120u);
+}
+
+TEST(Structure, MmcifAndGzipGiveTheSameAtoms) {
+  const Atoms pdb = read_atoms(kData / "1a1p.pdb");
+  const Atoms cif = read_atoms(kData / "1a1p.cif");
+  ASSERT_EQ(cif.size(), pdb.size());
+  for (std::size_t i = 0; i < pdb.size(); ++i) {
+    EXPECT_EQ(cif[i].atom_name, pdb[i].atom_name);
+    EXPECT_EQ(cif[i].element, pdb[i].element);
+    EXPECT_DOUBLE_EQ(cif[i].radius, pdb[i].radius);
+    EXPECT_LT((cif[i].center - pdb[i].center).norm(), 1e-9);
+  }
+  const std::string text = test::slurp(kData / "1a1p.pdb");
+  const auto gz = test::scratch_dir() / "1a1p.pdb.gz";
+  gzFile out = gzopen(gz.string().c_str(), "wb");
+  ASSERT_NE(out, nullptr);
+  ASSERT_EQ(gzwrite(out, text.data(), static_cast<unsigned>(text.size())),
+            static_cast<int>(text.size()));
+  gzclose(out);
+  const Atoms zipped = read_atoms(gz);
+  ASSERT_EQ(zipped.size(), pdb.size());
+  EXPECT_LT((zipped[100].center - pdb[100].center).norm(), 1e-12);
+}
+
+TEST(Structure, TruncatedGzipIsAnInputError) {
+  const std::string text = test::slurp(kData / "1a1p.pdb");
+  const auto gz = test::scratch_dir() / "cut.pdb.gz";
+  gzFile out = gzopen(gz.string().c_str(), "wb");
+  gzwrite(out, text.data(), static_cast<unsigned>(text.size()));
+  gzclose(out);
+  std::string bytes = test::slurp(gz);
+  bytes.resize(bytes.size() / 2);
+  write_text("cut.pdb.gz", bytes);
+  expect_input_error([&] { read_atoms(gz); }, {"cut.pdb.gz", "gzip"});
+}
+
+const char* kIronPdb =
+    "HETATM    1 FE   HEM A 200      10.000  10.000  10.000  1.00  0.00          FE  \n"
+    "HETATM    2  NA  HEM A 200      11.000  10.000  10.000  1.00  0.00           N  \n";
+
+TEST(Structure, ElementWithoutRadiusNamesTheLine) {
+  const auto path = write_text("heme.pdb", std::string("REMARK test\n") + kIronPdb);
+  expect_input_error([&] { read_atoms(path); }, {"heme.pdb:2:", "FE", "--radii"});
+  AtomReadOptions protein_only;
+  protein_only.include_hetatm = false;
+  expect_input_error([&] { read_atoms(path, protein_only); }, {"excluded"});
+}
+
+TEST(Structure, UserRadiusTableOverridesAndCompletes) {
+  const auto pdb = write_text("heme.pdb", kIronPdb);
+  const auto table = write_text("radii.txt",
+                                "# element and residue/atom entries\n"
+                                "FE 1.40\n"
+                                "HEM NA 1.65   # more specific than the element\n");
+  AtomReadOptions options;
+  options.radii_file = table;
+  const Atoms atoms = read_atoms(pdb, options);
+  ASSERT_EQ(atoms.size(), 2u);
+  EXPECT_DOUBLE_EQ(atoms[0].radius, 1.40);
+  EXPECT_DOUBLE_EQ(atoms[1].radius, 1.65);
+  // For PQR, the table replaces the file's radii where it matches.
+  const auto pqr = write_text("x.pqr", "ATOM 1 NA HEM 1 0 0 0 0 1.0\nATOM 2 C HEM 1 1 0 0 0 1.9\n");
+  const Atoms q = read_atoms(pqr, options);
+  EXPECT_DOUBLE_EQ(q[0].radius, 1.65);
+  EXPECT_DOUBLE_EQ(q[1].radius, 1.9);
+}
+
+TEST(RadiusTable, LookupPrecedenceAndWildcards) {
+  const auto path = write_text("t.txt", "ARG NH1 1.50\n* NH1 1.60\nARG * 1.70\nn 1.80\n* 2.00\n");
+  const RadiusTable t = read_radius_table(path);
+  Atom a;
+  a.residue_name = "arg";
+  a.atom_name = "NH1";
+  a.element = "N";
+  EXPECT_DOUBLE_EQ(*t.lookup(a), 1.50);
+  a.residue_name = "LYS";
+  EXPECT_DOUBLE_EQ(*t.lookup(a), 1.60);
+  a.atom_name = "NZ";
+  EXPECT_DOUBLE_EQ(*t.lookup(a), 1.80);
+  a.element = "C";
+  EXPECT_DOUBLE_EQ(*t.lookup(a), 2.00);
+  a.residue_name = "ARG";
+  EXPECT_DOUBLE_EQ(*t.lookup(a), 1.70);
+  EXPECT_FALSE(builtin_radius_table().lookup(Atom{}).has_value());
+}
+
+TEST(RadiusTable, Errors) {
+  expect_input_error([] { read_radius_table(write_text("a.txt", "C 1.7\nARG NH1\n")); },
+                     {"a.txt:2:", "radius 'NH1' is not a number"});
+  expect_input_error([] { read_radius_table(write_text("b.txt", "C 1 2 3\n")); },
+                     {"b.txt:1:", "expected"});
+  expect_input_error([] { read_radius_table(write_text("c.txt", "C -1.7\n")); },
+                     {"c.txt:1:", ">= 0"});
+  expect_input_error([] { read_radius_table(write_text("d.txt", "C 1.7\nc 1.8\n")); },
+                     {"d.txt:2:", "duplicate"});
+  expect_input_error([] { read_radius_table(write_text("e.txt", "# nothing\n")); },
+                     {"e.txt", "no entries"});
+  expect_input_error([] { read_radius_table(write_text("f.txt", "C inf\n")); },
+                     {"f.txt:1:", "finite"});
+}
+
+TEST(Structure, MalformedPdbIsAnInputError) {
+  const auto path =
+      write_text("bad.pdb", "ATOM      1  N   ILE     1      -7.1x8   5.359   0.606  1.00  0.00\n");
+  expect_input_error([&] { read_atoms(path); }, {"bad.pdb:1:", "x coordinate '-7.1x8'"});
+  expect_input_error([] { read_atoms(write_text("none.pdb", "REMARK nothing\nEND\n")); },
+                     {"none.pdb", "no ATOM"});
+  expect_input_error(
+      [] { read_atoms(write_text("bad.cif", "data_x\nloop_\n_a.b\n'unterminated\n")); },
+      {"bad.cif", "mmCIF"});
+}
+
+}  // namespace
+}  // namespace molmesh
