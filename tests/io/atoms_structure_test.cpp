@@ -2,6 +2,7 @@
 #include <zlib.h>
 
 #include <filesystem>
+#include <fstream>
 #include <map>
 #include <string>
 
@@ -62,6 +63,68 @@ TEST(Structure, PdbMatchesItsPqrCoordinates) {
   }
   EXPECT_GT(heavy, 90u);
   EXPECT_GE(matched + 4, heavy);  // at most one flipped ring
+}
+
+TEST(Structure, ApbsExamplePdbFilesReadOrFailWithALine) {
+  // apbs-data's PDB files include hand-made ones: tab-separated, shifted columns, ligand
+  // atoms without an element. Each either reads completely or fails naming its line.
+  const std::filesystem::path root = "/usr/share/apbs/examples";
+  ASSERT_TRUE(std::filesystem::is_directory(root))
+      << "install apbs-data (tools/debian-packages.txt)";
+  std::size_t ok = 0, failed = 0;
+  for (const auto& entry : std::filesystem::recursive_directory_iterator(root)) {
+    if (entry.path().extension() != ".pdb") continue;
+    std::size_t records = 0;
+    bool has_altloc = false;
+    {
+      std::ifstream in(entry.path());
+      std::string line;
+      while (std::getline(in, line)) {
+        if (line.rfind("ATOM", 0) != 0 && line.rfind("HETATM", 0) != 0) continue;
+        ++records;
+        if (line.size() > 16 && line[16] != ' ') has_altloc = true;
+      }
+    }
+    int warnings = 0;
+    Reporter reporter;
+    reporter.on_warning = [&](std::string_view) { ++warnings; };
+    try {
+      const Atoms atoms = read_atoms(entry.path(), {}, reporter);
+      ++ok;
+      if (!has_altloc) {
+        EXPECT_EQ(atoms.size(), records) << entry.path();
+        EXPECT_EQ(warnings, 0) << entry.path();
+      } else {
+        EXPECT_LT(atoms.size(), records) << entry.path();
+        EXPECT_EQ(warnings, 1) << entry.path();
+      }
+      for (const Atom& a : atoms) ASSERT_GT(a.radius, 1.0) << entry.path();
+    } catch (const InputError& e) {
+      ++failed;
+      EXPECT_GT(e.line(), 0u) << e.what();
+    }
+  }
+  EXPECT_GE(ok, 15u);
+  EXPECT_LE(failed, 4u);
+}
+
+TEST(Structure, AlternativeLocationsKeepTheFirstAndSameNamedAtomsStay) {
+  const auto path = write_text(
+      "alt.pdb",
+      "ATOM      1  CA AALA A   1       1.000   0.000   0.000  0.60  0.00           C  \n"
+      "ATOM      2  CA BALA A   1       1.500   0.000   0.000  0.40  0.00           C  \n"
+      "ATOM      3  C   ALA A   1       2.000   0.000   0.000  1.00  0.00           C  \n"
+      "HETATM    4  C   ALK B   2       5.000   0.000   0.000  1.00  0.00           C  \n"
+      "HETATM    5  C   ALK B   2       6.000   0.000   0.000  1.00  0.00           C  \n");
+  std::string warning;
+  Reporter reporter;
+  reporter.on_warning = [&](std::string_view m) { warning = m; };
+  const Atoms atoms = read_atoms(path, {}, reporter);
+  ASSERT_EQ(atoms.size(), 4u);  // CA B dropped; both alkane carbons named C kept
+  EXPECT_DOUBLE_EQ(atoms[0].center.x(), 1.0);
+  EXPECT_DOUBLE_EQ(atoms[3].center.x(), 6.0);
+  EXPECT_NE(warning.find("1 of 2 alternative-location atoms dropped"), std::string::npos)
+      << warning;
 }
 
 TEST(Structure, FiltersHydrogens) {

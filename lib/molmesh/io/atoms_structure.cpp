@@ -4,9 +4,10 @@
 #include <cmath>
 #include <gemmi/cif.hpp>
 #include <gemmi/mmcif.hpp>
-#include <gemmi/modify.hpp>
 #include <gemmi/pdb.hpp>
+#include <set>
 #include <unordered_map>
+#include <vector>
 
 #include "molmesh/core/error.hpp"
 #include "molmesh/io/text_input.hpp"
@@ -71,18 +72,28 @@ StructureAtoms parse_structure(const std::string& contents, const std::string& n
                   " models is used");
   gemmi::Model& model = st.models.front();
 
-  auto count_atoms = [&model](bool only_alternative) {
-    std::size_t count = 0;
-    for (const auto& chain : model.chains)
-      for (const auto& residue : chain.residues)
-        for (const auto& atom : residue.atoms)
-          if (!only_alternative || atom.altloc != '\0') ++count;
-    return count;
-  };
-  const std::size_t alternative = count_atoms(true);
-  const std::size_t before = count_atoms(false);
-  gemmi::remove_alternative_conformations(model);
-  const std::size_t dropped = before - count_atoms(false);
+  // Of each atom with alternative locations keep the first one listed. (gemmi's
+  // remove_alternative_conformations also drops atoms that merely share a name, which
+  // small-molecule files do: every carbon of an alkane may be called "C".)
+  std::size_t alternative = 0, dropped = 0;
+  for (auto& chain : model.chains) {
+    for (auto& residue : chain.residues) {
+      std::set<std::string> seen;
+      std::vector<gemmi::Atom> kept;
+      kept.reserve(residue.atoms.size());
+      for (auto& atom : residue.atoms) {
+        if (atom.altloc != '\0') {
+          ++alternative;
+          if (!seen.insert(atom.name).second) {
+            ++dropped;
+            continue;
+          }
+        }
+        kept.push_back(std::move(atom));
+      }
+      residue.atoms = std::move(kept);
+    }
+  }
   if (dropped > 0)
     reporter.warn(name + ": " + std::to_string(dropped) + " of " + std::to_string(alternative) +
                   " alternative-location atoms dropped (the first conformer is kept)");

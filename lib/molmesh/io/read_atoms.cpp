@@ -96,13 +96,14 @@ Atoms read_atoms(const std::filesystem::path& path, const AtomReadOptions& optio
     if (!radius && !pqr) {
       radius = builtin_radius_table().lookup(atom);
       if (!radius) {
-        const std::string element = atom.element.empty() ? "(none)" : atom.element;
-        throw InputError(
-            name, i < lines.size() ? lines[i] : 0,
-            describe(atom) + ": element " + element +
-                " has no radius in the built-in table; give one with --radii FILE (a line '" +
-                (atom.element.empty() ? std::string("*") : to_upper(atom.element)) +
-                " 1.80', see docs/formats.md) or exclude HETATM records");
+        const std::string what =
+            atom.element.empty()
+                ? "has no element symbol (none in the file, and the name does not identify one)"
+                : "has element " + atom.element + ", which has no radius in the built-in table";
+        throw InputError(name, i < lines.size() ? lines[i] : 0,
+                         describe(atom) + " " + what + "; give one with --radii FILE (a line '" +
+                             (atom.element.empty() ? std::string("*") : to_upper(atom.element)) +
+                             " 1.80', see docs/formats.md) or exclude HETATM records");
       }
     }
     if (radius) atom.radius = *radius;
