@@ -1,0 +1,218 @@
+// `molmesh improve`: a user's surface mesh (OFF/PLY/OBJ/STL or an MSMS .vert/.face pair)
+// -> repair -> the same quality improvement, coarsening and smoothing as `molmesh surface`
+// (GAMer §4.2, Fig. 10).
+#include <chrono>
+#include <filesystem>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "command_registry.hpp"
+#include "molmesh/core/error.hpp"
+#include "molmesh/io/msms.hpp"
+#include "molmesh/io/stats_json.hpp"
+#include "molmesh/io/surface_mesh_io.hpp"
+#include "molmesh/processing/dislocation.hpp"
+#include "molmesh/processing/mesh_repair.hpp"
+#include "molmesh/processing/process_surface.hpp"
+#include "molmesh/surface/surface_stats.hpp"
+
+namespace molmesh::cli {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+struct ImproveArgs {
+  std::string input;
+  std::string output;
+  std::string stats;
+  std::vector<double> t0{0.2};
+  bool no_coarsen = false;
+  bool repair_only = false;
+  MeshRepairOptions repair;
+  ProcessingOptions processing;
+};
+
+double seconds_since(Clock::time_point t) {
+  return std::chrono::duration<double>(Clock::now() - t).count();
+}
+
+SurfaceMesh read_input(const std::filesystem::path& path) {
+  if (is_msms_path(path)) return read_msms(path);
+  if (is_surface_mesh_path(path)) return read_surface_mesh(path);
+  throw InputError(path.string(),
+                   "cannot tell the mesh format from the extension: use .off, .ply, .obj, .stl "
+                   "or an MSMS .vert/.face pair");
+}
+
+void write_output(const std::filesystem::path& path, const SurfaceMesh& mesh) {
+  if (is_msms_path(path)) {
+    write_msms(path, mesh);
+  } else {
+    write_surface_mesh(path, mesh);
+  }
+}
+
+nlohmann::json repair_json(const MeshRepairReport& r) {
+  nlohmann::json j;
+  j["merged_vertices"] = r.merged_vertices;
+  j["unreferenced_vertices"] = r.unreferenced_vertices;
+  j["collapsed_faces"] = r.collapsed_faces;
+  j["duplicate_faces"] = r.duplicate_faces;
+  j["flipped_cap_faces"] = r.flipped_cap_faces;
+  j["remaining_degenerate_faces"] = r.remaining_degenerate_faces;
+  j["split_vertices"] = r.split_vertices;
+  j["reoriented_faces"] = r.reoriented_faces;
+  j["reoriented_components"] = r.reoriented_components;
+  j["components"] = r.components;
+  return j;
+}
+
+void run(const ImproveArgs& args, const CliContext& ctx) {
+  const Reporter reporter = ctx.reporter();
+  const std::filesystem::path out_path(args.output);
+  if (!is_surface_mesh_path(out_path) && !is_msms_path(out_path)) {
+    throw Error("cannot tell the output format from '" + args.output +
+                "': use .off, .ply, .obj, .stl, or .vert/.face for MSMS");
+  }
+  const auto total_start = Clock::now();
+  StageTimings timings;
+
+  auto start = Clock::now();
+  reporter.progress("read", 0.0);
+  const SurfaceMesh input = read_input(args.input);
+  reporter.progress("read", 1.0);
+  timings.emplace_back("read", seconds_since(start));
+  if (input.triangles.empty()) throw InputError(args.input, "the mesh has no triangles");
+
+  start = Clock::now();
+  MeshRepairReport report;
+  SurfaceMesh repaired;
+  try {
+    repaired = repair_surface_mesh(input, args.repair, report, reporter);
+  } catch (const Error& e) {
+    throw Error(args.input + ": " + e.what());
+  }
+  timings.emplace_back("repair", seconds_since(start));
+  if (report.repairs() != "nothing to repair")
+    reporter.warn("repaired " + args.input + ": " + report.repairs());
+
+  SurfaceMesh result = repaired;
+  std::vector<ProcessingStage> stages;
+  if (!args.repair_only) {
+    ProcessingOptions options = args.processing;
+    options.t0 = args.no_coarsen ? std::vector<double>{} : args.t0;
+    ProcessingResult processed = process_surface(repaired, options, reporter);
+    for (const ProcessingStage& s : processed.stages) timings.emplace_back(s.name, s.seconds);
+    stages = std::move(processed.stages);
+    result = std::move(processed.mesh);
+  }
+
+  start = Clock::now();
+  reporter.progress("write", 0.0);
+  write_output(out_path, result);
+  reporter.progress("write", 1.0);
+  timings.emplace_back("write", seconds_since(start));
+
+  if (!args.stats.empty()) {
+    const SurfaceStats stats = compute_surface_stats(result);
+    start = Clock::now();
+    const Dislocation d = measure_dislocation(result, repaired);
+    timings.emplace_back("dislocation", seconds_since(start));
+    timings.emplace_back("total", seconds_since(total_start));
+    nlohmann::json in;
+    in["path"] = args.input;
+    in["input_surface"] = to_json(compute_surface_stats(repaired));
+    in["repair"] = repair_json(report);
+    in["output"] = args.output;
+    nlohmann::json parameters;
+    parameters["t0"] = args.no_coarsen ? std::vector<double>{} : args.t0;
+    parameters["rings"] = args.processing.rings;
+    parameters["sweeps"] = args.processing.improve.sweeps;
+    parameters["feature_weight"] = args.processing.improve.feature_weight;
+    parameters["smooth_normal_iterations"] = args.processing.smoothing.normal_iterations;
+    parameters["flips"] = args.processing.flips;
+    parameters["cleanup_rounds"] = args.processing.cleanup_rounds;
+    parameters["merge_tolerance"] = args.repair.merge_tolerance;
+    parameters["repair_only"] = args.repair_only;
+    nlohmann::json doc = stats_document(stats, timings, in, parameters);
+    doc["dislocation"] = {{"max", d.max}, {"mean", d.mean}};
+    write_json_file(args.stats, doc);
+  }
+}
+
+const CommandRegistration registration{
+    "improve", [](CLI::App& app, CliContext& ctx) {
+      auto args = std::make_shared<ImproveArgs>();
+      auto* cmd = app.add_subcommand(
+          "improve",
+          "Repair and improve a user's surface mesh (GAMer §4.2): merge duplicate vertices, drop "
+          "degenerate and duplicate triangles, orient consistently and outward, then quality "
+          "improvement, coarsening and smoothing as in `molmesh surface`. Meshes with holes or "
+          "non-manifold edges are refused with counts and example locations.");
+      cmd->add_option("MESH", args->input,
+                      "Input surface: .off, .ply, .obj, .stl, or an MSMS pair (NAME.vert or "
+                      "NAME.face; both must exist)")
+          ->required();
+      cmd->add_option("-o,--output", args->output,
+                      "Output surface (.off, .ply, .obj, .stl, or .vert/.face for an MSMS pair)")
+          ->required()
+          ->type_name("OUT");
+      cmd->add_option("--stats", args->stats,
+                      "Write metrics of the result (angles, counts, closed, manifold), the input's "
+                      "metrics, the repairs made, the dislocation from the (repaired) input in Å "
+                      "and stage timings as JSON to this file")
+          ->type_name("FILE.json");
+      cmd->add_option("--t0", args->t0,
+                      "Coarsening thresholds T0 of Eq. 6, one coarsening round each, in order "
+                      "(larger removes more vertices; features survive better with several small "
+                      "rounds)")
+          ->delimiter(',')
+          ->capture_default_str()
+          ->type_name("T0[,T0...]");
+      cmd->add_flag("--no-coarsen", args->no_coarsen,
+                    "Quality improvement and smoothing only: keep every vertex");
+      cmd->add_flag("--repair-only", args->repair_only,
+                    "Write the repaired mesh without any processing");
+      cmd->add_option("--rings", args->processing.rings,
+                      "Neighbourhood (k-ring) of the structure tensor that tells features from "
+                      "flat regions")
+          ->check(CLI::Range(1, 5))
+          ->capture_default_str()
+          ->type_name("K");
+      cmd->add_option("--sweeps", args->processing.improve.sweeps,
+                      "Passes of angle-based quality improvement over all vertices per round")
+          ->check(CLI::Range(0, 100))
+          ->capture_default_str()
+          ->type_name("N");
+      cmd->add_option("--feature-weight", args->processing.improve.feature_weight,
+                      "How strongly vertices on features are held in place during improvement "
+                      "(0: not at all)")
+          ->check(CLI::NonNegativeNumber)
+          ->capture_default_str()
+          ->type_name("W");
+      cmd->add_option("--smooth-iterations", args->processing.smoothing.normal_iterations,
+                      "Normal-diffusion iterations of the feature-preserving smoothing (0: no "
+                      "smoothing)")
+          ->check(CLI::Range(0, 100))
+          ->capture_default_str()
+          ->type_name("N");
+      cmd->add_flag("!--no-flips", args->processing.flips,
+                    "Do not flip edges to raise angles (vertices move only)");
+      cmd->add_option("--cleanup-rounds", args->processing.cleanup_rounds,
+                      "Final rounds of improvement and flips aimed at the worst triangles")
+          ->check(CLI::Range(0, 100))
+          ->capture_default_str()
+          ->type_name("N");
+      cmd->add_option("--merge-tolerance", args->repair.merge_tolerance,
+                      "Vertices closer than this (Å) are merged during repair (0: only exact "
+                      "duplicates)")
+          ->check(CLI::NonNegativeNumber)
+          ->capture_default_str()
+          ->type_name("D");
+      cmd->callback([args, &ctx] { run(*args, ctx); });
+    }};
+
+}  // namespace
+}  // namespace molmesh::cli
