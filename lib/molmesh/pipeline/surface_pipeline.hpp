@@ -11,6 +11,7 @@
 #include "molmesh/core/reporter.hpp"
 #include "molmesh/surface/surface_mesh.hpp"
 #include "molmesh/surface/surface_stats.hpp"
+#include "molmesh/volume/fast_blur.hpp"
 #include "molmesh/volume/gaussian_blur.hpp"
 #include "molmesh/volume/grid.hpp"
 
@@ -18,6 +19,9 @@ namespace molmesh {
 
 struct SurfacePipelineOptions {
   BlurOptions blur;  // blur.isovalue is overwritten with `isovalue` below
+  // Eq. 1 summed exactly, or Eq. 2 by splatting + recursive filtering (volume/fast_blur.hpp,
+  // measurements in docs/inputs.md).
+  BlurMethod blur_method = BlurMethod::kExact;
   double isovalue = 1.0;
   double min_cavity_volume = 0.0;  // Å³; cavities enclosing less are dropped; 0 keeps all
   bool raw = false;                // stop after marching cubes (and cavity removal)
