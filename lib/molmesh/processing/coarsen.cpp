@@ -26,6 +26,9 @@ constexpr int kMaxHoleValence = 24;
 const double kCosMaxTilt = std::cos(60.0 * std::numbers::pi / 180.0);
 // Triangles thinner than this are degenerate for our purposes.
 const double kMinTriangleAngle = 1.0 * std::numbers::pi / 180.0;
+// Radians of minimum angle traded per unit of (height of x above a new triangle) / (hole
+// radius); see plan_removal.
+constexpr double kFidelityWeight = 2.0;
 
 // Angle-weighted unit vertex normals, as vertex_normals.hpp defines them, computed on the
 // editable mesh so that passes need no conversion to a plain mesh.
@@ -168,6 +171,7 @@ bool plan_removal(const HalfedgeMesh& mesh, int v, Scratch& s, std::vector<Trian
     winding += std::atan2(cross, a.dot(b));
   }
   if (std::abs(winding - 2 * std::numbers::pi) > 1e-6) return false;
+  const double hole_radius = std::sqrt(scale);
 
   s.valence.resize(k);
   s.edge.assign(static_cast<std::size_t>(k * k), 0);
@@ -207,9 +211,17 @@ bool plan_removal(const HalfedgeMesh& mesh, int v, Scratch& s, std::vector<Trian
     if (n.dot(normal) < kCosMaxTilt * n.norm()) return -1.0;
     const double angle = triangle_min_angle(s.p3[i], s.p3[m], s.p3[j]);
     if (angle < kMinTriangleAngle) return -1.0;
+    // Shape fidelity: the height of x above the new triangle's plane, relative to the hole
+    // size. Zero for a flat hole and for a straight ridge filled along the ridge line; large
+    // when a triangle cuts across a ridge or valley. Weighted so that cutting a 90° edge
+    // costs ~45° of minimum angle, while the near-uniform sagitta of a smooth region barely
+    // changes the choice.
+    const double height = std::abs(n.normalized().dot(x - s.p3[i]));
+    double quality = angle - kFidelityWeight * height / hole_radius;
     // A ring vertex left with 3 neighbours cannot get good angles later; accept it only
     // when nothing better exists.
-    return (ear >= 0 && s.valence[ear] == 4) ? 0.5 * angle : angle;
+    if (ear >= 0 && s.valence[ear] == 4) quality -= 0.25;
+    return std::max(quality, 1e-6);
   };
 
   // Max-min triangulation of the convex-indexed polygon 0..k-1 by dynamic programming.
