@@ -128,7 +128,7 @@ void accumulate(Grid& grid, const Atoms& atoms, const std::vector<int>& active,
       }
       const int done = ++planes_done;
       std::unique_lock lock(report_mutex, std::try_to_lock);
-      if (lock.owns_lock()) reporter.progress("blur", 0.05 + 0.95 * done / nz);
+      if (lock.owns_lock()) reporter.progress("blur", 0.95 * done / nz);
     }
   });
 }

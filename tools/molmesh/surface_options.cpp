@@ -1,0 +1,68 @@
+#include "surface_options.hpp"
+
+#include <string>
+
+namespace molmesh::cli {
+
+void add_atom_options(CLI::App& cmd, AtomReadOptions& options) {
+  cmd.add_option_function<std::string>(
+         "--radii", [&options](const std::string& file) { options.radii_file = file; },
+         "Radius table (docs/formats.md) overriding the built-in radii; for PQR input it "
+         "replaces the file's radii wherever it has an entry")
+      ->check(CLI::ExistingFile)
+      ->type_name("FILE");
+  cmd.add_flag("--hetatm,!--no-hetatm", options.include_hetatm,
+               "Include (default) or exclude HETATM records (ligands, ions)");
+  cmd.add_flag("--waters", options.include_waters,
+               "Include water molecules (HOH, WAT, ...), which are dropped by default");
+}
+
+void add_surface_pipeline_options(CLI::App& cmd, SurfacePipelineOptions& options) {
+  cmd.add_option("--spacing", options.blur.spacing,
+                 "Grid spacing of the blurred volume in Å (smaller: finer surface, more "
+                 "vertices, more memory)")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str()
+      ->type_name("H");
+  cmd.add_option("--blobbyness", options.blur.blobbyness,
+                 "Blobbyness B < 0 of the Gaussian kernel exp(B(|x-c|^2/r^2 - 1)) for atoms "
+                 "without their own; closer to 0 blurs more, more negative follows the atoms "
+                 "closely")
+      ->check(CLI::Range(-1e6, -1e-12))
+      ->capture_default_str()
+      ->type_name("B");
+  cmd.add_option("--isovalue", options.isovalue,
+                 "Level of the blurred volume that is the surface (the volume is 1 on a lone "
+                 "atom's sphere)")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str()
+      ->type_name("T");
+  cmd.add_option("--min-cavity-volume", options.min_cavity_volume,
+                 "Drop interior cavities enclosing less than V Å^3 (0 keeps all)")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str()
+      ->type_name("V");
+  cmd.add_flag("--raw", options.raw,
+               "Stop after marching cubes: no quality improvement, coarsening or smoothing");
+}
+
+void add_surface_options(CLI::App& cmd, SurfaceCliOptions& options) {
+  add_atom_options(cmd, options.atoms);
+  add_surface_pipeline_options(cmd, options.pipeline);
+}
+
+nlohmann::json surface_parameters_json(const SurfaceCliOptions& options) {
+  nlohmann::json j;
+  j["spacing"] = options.pipeline.blur.spacing;
+  j["blobbyness"] = options.pipeline.blur.blobbyness;
+  j["isovalue"] = options.pipeline.isovalue;
+  j["kernel_truncation"] = options.pipeline.blur.truncation;
+  j["min_cavity_volume"] = options.pipeline.min_cavity_volume;
+  j["raw"] = options.pipeline.raw;
+  j["radii"] = options.atoms.radii_file ? options.atoms.radii_file->string() : std::string();
+  j["hetatm"] = options.atoms.include_hetatm;
+  j["waters"] = options.atoms.include_waters;
+  return j;
+}
+
+}  // namespace molmesh::cli
