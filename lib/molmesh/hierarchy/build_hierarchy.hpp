@@ -1,0 +1,58 @@
+#pragma once
+// The multilevel hierarchy of GAMer §4.3: level 0 is the input surface processed with the
+// first T0; level L+1 is level L's surface coarsened and improved once more with the next
+// T0 (so surfaces are nested by provenance, and coarsening several times with growing T0
+// preserves features better than one large T0, as the paper observes). Every level's
+// volume mesh is built from its own surface with the same domain, markers and outer sphere
+// (the outer radius is fixed from level 0 and reused, so all levels cover the same domain),
+// renumbered for locality, and consecutive levels are linked by prolongation operators.
+#include <vector>
+
+#include "molmesh/atoms/atom.hpp"
+#include "molmesh/core/reporter.hpp"
+#include "molmesh/hierarchy/hierarchy.hpp"
+#include "molmesh/hierarchy/transfer.hpp"
+#include "molmesh/processing/process_surface.hpp"
+#include "molmesh/tetmesh/tetrahedralize.hpp"
+
+namespace molmesh {
+
+struct HierarchyOptions {
+  // One level per value, finest first; must be non-decreasing and non-empty. The paper's
+  // Fig. 11 series.
+  std::vector<double> t0 = {0.1, 0.3, 0.5, 0.7};
+  ProcessingOptions processing;  // processing.t0 is replaced by one T0 per level
+  TetMeshOptions tetmesh;
+  bool renumber = true;  // reverse Cuthill-McKee on every volume mesh
+};
+
+struct HierarchyLevelReport {
+  double surface_seconds = 0.0;
+  double volume_seconds = 0.0;
+  double renumber_seconds = 0.0;
+  double transfer_seconds = 0.0;  // building the operator to the next finer level
+  int bandwidth_before = 0;       // vertex bandwidth of TetGen's numbering
+  int bandwidth_after = 0;        // after renumbering
+  TransferStats volume_transfer;  // to the next finer level (levels > 0)
+  TransferStats surface_transfer;
+  TetMeshReport tetmesh;
+};
+
+struct HierarchyReport {
+  std::vector<HierarchyLevelReport> levels;
+  double outer_radius = 0.0;  // Å, shared by all levels (0 for interior meshes)
+  double seconds = 0.0;
+};
+
+// `surface`: the (raw or processed) molecular surface that level 0 is derived from.
+// Throws molmesh::Error on invalid options or when a stage fails (the message says which
+// level).
+Hierarchy build_hierarchy(const SurfaceMesh& surface, const Atoms& atoms,
+                          const HierarchyOptions& options, const Reporter& reporter = {},
+                          HierarchyReport* report = nullptr);
+
+// Molecular-surface markers for a hierarchy surface: kActiveSite for faces whose three
+// vertices lie in an active-site sphere (and those vertices), kMolecularSurface otherwise.
+void mark_surface(SurfaceMesh& surface, const std::vector<Sphere>& active_site);
+
+}  // namespace molmesh

@@ -1,0 +1,94 @@
+#include "support/structured_meshes.hpp"
+
+#include <algorithm>
+#include <array>
+#include <map>
+
+namespace molmesh::testing {
+namespace {
+
+int vertex_id(int n, int i, int j, int k) { return i + (n + 1) * (j + (n + 1) * k); }
+
+double signed_volume(const TetMesh& m, const Tetrahedron& t) {
+  const Vec3& a = m.points[static_cast<std::size_t>(t[0])];
+  return (m.points[static_cast<std::size_t>(t[1])] - a)
+      .cross(m.points[static_cast<std::size_t>(t[2])] - a)
+      .dot(m.points[static_cast<std::size_t>(t[3])] - a);
+}
+
+}  // namespace
+
+TetMesh structured_cube(int n, double lo, double hi) {
+  TetMesh mesh;
+  const double h = (hi - lo) / n;
+  for (int k = 0; k <= n; ++k) {
+    for (int j = 0; j <= n; ++j) {
+      for (int i = 0; i <= n; ++i) {
+        mesh.points.emplace_back(lo + i * h, lo + j * h, lo + k * h);
+        const bool boundary = i == 0 || j == 0 || k == 0 || i == n || j == n || k == n;
+        mesh.vertex_markers.push_back(boundary ? 2 : 0);
+      }
+    }
+  }
+  std::array<int, 3> axes{0, 1, 2};
+  for (int k = 0; k < n; ++k) {
+    for (int j = 0; j < n; ++j) {
+      for (int i = 0; i < n; ++i) {
+        std::sort(axes.begin(), axes.end());
+        do {
+          std::array<int, 3> c{i, j, k};
+          Tetrahedron t{};
+          t[0] = vertex_id(n, c[0], c[1], c[2]);
+          for (int s = 0; s < 3; ++s) {
+            ++c[static_cast<std::size_t>(axes[static_cast<std::size_t>(s)])];
+            t[static_cast<std::size_t>(s) + 1] = vertex_id(n, c[0], c[1], c[2]);
+          }
+          if (signed_volume(mesh, t) < 0) std::swap(t[2], t[3]);
+          mesh.tetrahedra.push_back(t);
+          mesh.cell_markers.push_back(2);
+        } while (std::next_permutation(axes.begin(), axes.end()));
+      }
+    }
+  }
+  // Boundary faces: outward faces of a positively oriented tet that occur once.
+  static constexpr int kFaces[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
+  std::map<std::array<int, 3>, std::pair<int, Triangle>> count;
+  for (const auto& t : mesh.tetrahedra) {
+    for (const auto& f : kFaces) {
+      Triangle tri{t[static_cast<std::size_t>(f[0])], t[static_cast<std::size_t>(f[1])],
+                   t[static_cast<std::size_t>(f[2])]};
+      auto key = tri;
+      std::sort(key.begin(), key.end());
+      auto& entry = count[key];
+      ++entry.first;
+      entry.second = tri;
+    }
+  }
+  for (const auto& [key, entry] : count) {
+    if (entry.first == 1) {
+      mesh.boundary_faces.push_back(entry.second);
+      mesh.boundary_face_markers.push_back(2);
+    }
+  }
+  return mesh;
+}
+
+SurfaceMesh structured_cube_surface(int n, double lo, double hi) {
+  const TetMesh cube = structured_cube(n, lo, hi);
+  SurfaceMesh surface;
+  std::map<int, int> index;
+  for (const auto& f : cube.boundary_faces) {
+    Triangle t{};
+    for (std::size_t c = 0; c < 3; ++c) {
+      auto [it, inserted] = index.emplace(f[c], static_cast<int>(surface.points.size()));
+      if (inserted) surface.points.push_back(cube.points[static_cast<std::size_t>(f[c])]);
+      t[c] = it->second;
+    }
+    surface.triangles.push_back(t);
+  }
+  surface.vertex_markers.assign(surface.points.size(), 1);
+  surface.face_markers.assign(surface.triangles.size(), 1);
+  return surface;
+}
+
+}  // namespace molmesh::testing

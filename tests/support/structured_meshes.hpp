@@ -1,0 +1,17 @@
+#pragma once
+// Small synthetic meshes with known structure for tests of the hierarchy transfer
+// operators and the HDF5 files (independent of the meshing pipeline).
+#include "molmesh/surface/surface_mesh.hpp"
+#include "molmesh/tetmesh/tet_mesh.hpp"
+
+namespace molmesh::testing {
+
+// The box [lo, hi]^3 cut into n^3 cubes of 6 positively oriented tetrahedra each (Kuhn
+// subdivision, conforming). cell_markers = 2 (solvent); boundary faces outward with marker
+// 2, vertex markers 2 on the boundary and 0 inside.
+TetMesh structured_cube(int n, double lo = 0.0, double hi = 1.0);
+
+// The boundary of structured_cube(n, lo, hi) as a closed surface, triangles outward.
+SurfaceMesh structured_cube_surface(int n, double lo = 0.0, double hi = 1.0);
+
+}  // namespace molmesh::testing
