@@ -1,0 +1,218 @@
+// `molmesh hierarchy`: atoms -> surface -> multilevel surface and volume meshes (GAMer
+// §4.3) with transfer operators, in one HDF5 file plus XDMF sidecars.
+#include <CLI/CLI.hpp>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "command_registry.hpp"
+#include "molmesh/core/error.hpp"
+#include "molmesh/hierarchy/build_hierarchy.hpp"
+#include "molmesh/io/hierarchy_hdf5.hpp"
+#include "molmesh/io/read_atoms.hpp"
+#include "molmesh/io/sha256.hpp"
+#include "molmesh/io/sphere_list.hpp"
+#include "molmesh/pipeline/surface_pipeline.hpp"
+
+namespace molmesh::cli {
+namespace {
+
+struct HierarchyArgs {
+  std::string input;
+  std::string output;
+  std::vector<double> t0 = {0.1, 0.3, 0.5, 0.7};
+  std::string domain = "full";
+  // surface
+  double spacing = 0.5;
+  double blobbyness = -0.5;
+  double isovalue = 1.0;
+  double min_cavity_volume = 0.0;
+  // processing
+  double alpha = 1.0;
+  double beta = 1.0;
+  int rings = 2;
+  // volume
+  double sphere_ratio = 40.0;
+  double outer_radius = 0.0;
+  int outer_subdivisions = 3;
+  std::string active_site;
+  double max_radius_edge = 2.0;
+  double min_dihedral = 10.0;
+  double max_volume = 0.0;
+  bool no_renumber = false;
+};
+
+std::string text(double v) {
+  std::ostringstream out;
+  out.precision(17);
+  out << v;
+  return out.str();
+}
+
+std::string join(const std::vector<double>& values) {
+  std::string out;
+  for (std::size_t i = 0; i < values.size(); ++i) out += (i ? "," : "") + text(values[i]);
+  return out;
+}
+
+void run(const HierarchyArgs& args, const CliContext& ctx) {
+  const auto start = std::chrono::steady_clock::now();
+  const Reporter reporter = ctx.reporter();
+  const Atoms atoms = read_atoms(args.input, {}, reporter);
+
+  SurfacePipelineOptions surface_options;
+  surface_options.blur.spacing = args.spacing;
+  surface_options.blur.blobbyness = args.blobbyness;
+  surface_options.isovalue = args.isovalue;
+  surface_options.min_cavity_volume = args.min_cavity_volume;
+  surface_options.raw = true;  // each level does its own processing with its own T0
+  const auto surface = surface_from_atoms(atoms, surface_options, reporter);
+
+  HierarchyOptions options;
+  options.t0 = args.t0;
+  options.processing.alpha = args.alpha;
+  options.processing.beta = args.beta;
+  options.processing.rings = args.rings;
+  const std::map<std::string, Domain> domains{
+      {"interior", Domain::interior}, {"exterior", Domain::exterior}, {"full", Domain::full}};
+  options.tetmesh.domain = domains.at(args.domain);
+  options.tetmesh.sphere_ratio = args.sphere_ratio;
+  if (args.outer_radius > 0) options.tetmesh.outer_radius = args.outer_radius;
+  options.tetmesh.outer_sphere_subdivisions = args.outer_subdivisions;
+  if (!args.active_site.empty()) {
+    options.tetmesh.active_site = read_spheres(args.active_site);
+    // The active site stays dense on every level (paper Fig. 5).
+    options.processing.keep_spheres = options.tetmesh.active_site;
+  }
+  options.tetmesh.max_radius_edge_ratio = args.max_radius_edge;
+  options.tetmesh.min_dihedral_deg = args.min_dihedral;
+  if (args.max_volume > 0) options.tetmesh.max_volume = args.max_volume;
+  options.renumber = !args.no_renumber;
+
+  HierarchyReport report;
+  Hierarchy hierarchy = build_hierarchy(surface.surface, atoms, options, reporter, &report);
+  hierarchy.input_name = std::filesystem::path(args.input).filename().string();
+  hierarchy.input_checksum = sha256_file(args.input);
+  auto& p = hierarchy.parameters;
+  p["t0"] = join(args.t0);
+  p["domain"] = args.domain;
+  p["spacing"] = text(args.spacing);
+  p["blobbyness"] = text(args.blobbyness);
+  p["isovalue"] = text(args.isovalue);
+  p["min_cavity_volume"] = text(args.min_cavity_volume);
+  p["alpha"] = text(args.alpha);
+  p["beta"] = text(args.beta);
+  p["rings"] = std::to_string(args.rings);
+  p["sphere_ratio"] = text(args.sphere_ratio);
+  p["outer_radius"] = text(report.outer_radius);
+  p["outer_sphere_subdivisions"] = std::to_string(args.outer_subdivisions);
+  p["active_site"] = args.active_site;
+  p["active_site_spheres"] = std::to_string(options.tetmesh.active_site.size());
+  p["max_radius_edge_ratio"] = text(args.max_radius_edge);
+  p["min_dihedral_deg"] = text(args.min_dihedral);
+  p["max_volume"] = args.max_volume > 0 ? text(args.max_volume) : "none";
+  p["renumbering"] = args.no_renumber ? "none" : "reverse Cuthill-McKee";
+  if (!report.levels.empty()) p["tetgen_switches"] = report.levels.front().tetmesh.tetgen_switches;
+  p["molmesh_version"] = "0.1.0";
+  write_hierarchy(args.output, hierarchy);
+
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (!ctx.quiet) {
+    std::fprintf(stderr, "level  T0     surface verts  volume verts     tets  bandwidth\n");
+    for (std::size_t l = 0; l < hierarchy.levels.size(); ++l) {
+      const auto& level = hierarchy.levels[l];
+      std::fprintf(stderr, "%5zu  %.3f  %13zu  %12zu  %7zu  %d -> %d\n", l, level.t0,
+                   level.surface.points.size(), level.volume.points.size(),
+                   level.volume.tetrahedra.size(), report.levels[l].bandwidth_before,
+                   report.levels[l].bandwidth_after);
+    }
+    std::fprintf(stderr, "wrote %s (%.1f s)\n", args.output.c_str(), seconds);
+  }
+}
+
+const CommandRegistration registration{
+    "hierarchy", [](CLI::App& app, CliContext& ctx) {
+      auto args = std::make_shared<HierarchyArgs>();
+      auto* cmd = app.add_subcommand(
+          "hierarchy",
+          "Multilevel surface and volume meshes for multigrid (GAMer 4.3): level 0 finest, each "
+          "coarser level coarsened and improved once more with the next T0; one HDF5 file with "
+          "prolongation operators (restriction = transpose) and XDMF sidecars for ParaView");
+      cmd->add_option("input", args->input,
+                      "Molecule: .pqr, .pdb/.ent or .cif/.mmcif (optionally .gz)")
+          ->required()
+          ->check(CLI::ExistingFile);
+      cmd->add_option(
+             "-o,--output", args->output,
+             "Output HDF5 file (OUT.h5); XDMF sidecars OUT.xdmf and OUT_L<L>_{volume,surface}.xdmf "
+             "are written beside it")
+          ->required();
+      cmd->add_option(
+             "--t0", args->t0,
+             "Coarsening thresholds T0 (Eq. 6), one level each, finest first, non-decreasing")
+          ->delimiter(',')
+          ->capture_default_str();
+      cmd->add_option(
+             "--domain", args->domain,
+             "Volume meshed on every level: interior (molecule), exterior (solvent up to the "
+             "outer sphere) or full (both, conforming)")
+          ->check(CLI::IsMember({"interior", "exterior", "full"}))
+          ->capture_default_str();
+      cmd->add_option("--spacing", args->spacing, "Grid spacing of the Gaussian blurring (Å)")
+          ->check(CLI::PositiveNumber)
+          ->capture_default_str();
+      cmd->add_option("--blobbyness", args->blobbyness, "Global blobbyness B of Eq. 1 (negative)")
+          ->capture_default_str();
+      cmd->add_option("--isovalue", args->isovalue, "Isovalue of the blurred volume")
+          ->check(CLI::PositiveNumber)
+          ->capture_default_str();
+      cmd->add_option("--min-cavity-volume", args->min_cavity_volume,
+                      "Drop interior cavities enclosing less than this volume (Å³; 0 keeps all)")
+          ->capture_default_str();
+      cmd->add_option("--alpha", args->alpha, "Eq. 6 exponent on the longest incident edge")
+          ->capture_default_str();
+      cmd->add_option("--beta", args->beta, "Eq. 6 exponent on the eigenvalue ratio")
+          ->capture_default_str();
+      cmd->add_option("--rings", args->rings, "k-ring of the local structure tensor")
+          ->check(CLI::Range(1, 4))
+          ->capture_default_str();
+      cmd->add_option("--sphere-ratio", args->sphere_ratio,
+                      "Outer sphere radius as a multiple of the molecule size (exterior/full)")
+          ->check(CLI::PositiveNumber)
+          ->capture_default_str();
+      cmd->add_option(
+             "--outer-radius", args->outer_radius,
+             "Outer sphere radius in Å (overrides --sphere-ratio); the same on every level")
+          ->check(CLI::PositiveNumber);
+      cmd->add_option("--outer-sphere-subdivisions", args->outer_subdivisions,
+                      "Icosphere subdivision level of the outer sphere (10*4^L+2 vertices)")
+          ->check(CLI::Range(0, 6))
+          ->capture_default_str();
+      cmd->add_option(
+             "--active-site", args->active_site,
+             "Sphere list file (x y z r per line, Å): faces inside are marked active site (3) "
+             "and no vertex inside is removed by coarsening on any level")
+          ->check(CLI::ExistingFile);
+      cmd->add_option("--max-radius-edge", args->max_radius_edge,
+                      "TetGen quality bound: radius-edge ratio of tetrahedra")
+          ->check(CLI::Range(1.0, 100.0))
+          ->capture_default_str();
+      cmd->add_option("--min-dihedral", args->min_dihedral,
+                      "TetGen quality bound: minimum dihedral angle (degrees)")
+          ->check(CLI::Range(0.0, 30.0))
+          ->capture_default_str();
+      cmd->add_option("--max-volume", args->max_volume, "Upper bound on tetrahedron volume (Å³)")
+          ->check(CLI::PositiveNumber);
+      cmd->add_flag("--no-renumber", args->no_renumber,
+                    "Keep TetGen's vertex numbering (default: reverse Cuthill-McKee, permutation "
+                    "stored in /levels/<L>/volume/permutation)");
+      cmd->callback([args, &ctx] { run(*args, ctx); });
+    }};
+
+}  // namespace
+}  // namespace molmesh::cli
