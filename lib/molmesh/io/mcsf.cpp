@@ -1,0 +1,319 @@
+#include "molmesh/io/mcsf.hpp"
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <fstream>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <string_view>
+#include <unordered_map>
+#include <vector>
+
+#include "molmesh/core/atomic_file.hpp"
+#include "molmesh/core/error.hpp"
+
+namespace molmesh {
+namespace {
+
+using FaceKey = std::array<int, 3>;
+
+FaceKey sorted_key(int a, int b, int c) {
+  FaceKey k{a, b, c};
+  std::sort(k.begin(), k.end());
+  return k;
+}
+
+struct FaceKeyHash {
+  std::size_t operator()(const FaceKey& k) const {
+    std::uint64_t h = static_cast<std::uint32_t>(k[0]);
+    h = h * 0x9E3779B97F4A7C15ull ^ static_cast<std::uint32_t>(k[1]);
+    h = h * 0x9E3779B97F4A7C15ull ^ static_cast<std::uint32_t>(k[2]);
+    return static_cast<std::size_t>(h ^ (h >> 29));
+  }
+};
+
+// Corners of the face opposite corner k, ordered to face out of a positive tet.
+constexpr int kFace[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
+
+int type_of_marker(int marker, const McsfFaceTypes& types) {
+  switch (marker) {
+    case markers::kMolecularSurface:
+      return types.molecular_surface;
+    case markers::kOuterSphere:
+      return types.outer_sphere;
+    case markers::kActiveSite:
+      return types.active_site;
+    default:
+      return types.other;
+  }
+}
+
+int marker_of_type(int type, const McsfFaceTypes& types) {
+  if (type == types.molecular_surface) return markers::kMolecularSurface;
+  if (type == types.outer_sphere) return markers::kOuterSphere;
+  if (type == types.active_site) return markers::kActiveSite;
+  if (type == types.other) return markers::kNoMarker;
+  return type + 100;
+}
+
+int marker_priority(int m) {
+  switch (m) {
+    case markers::kActiveSite:
+      return 3;
+    case markers::kMolecularSurface:
+      return 2;
+    case markers::kOuterSphere:
+      return 1;
+    case markers::kNoMarker:
+      return 0;
+    default:
+      return 4;
+  }
+}
+
+void write_number(std::ostream& out, double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, " %.10e", v);
+  out << buf;
+}
+
+// A tokenizer over the whole file that tracks line numbers and skips % comments.
+class Lexer {
+ public:
+  Lexer(std::string text, std::string file) : text_(std::move(text)), file_(std::move(file)) {}
+
+  // Next token: a run of [A-Za-z0-9_.+-] or a single punctuation character; empty at EOF.
+  std::string_view next() {
+    skip();
+    if (pos_ >= text_.size()) return {};
+    token_line_ = line_;
+    const std::size_t start = pos_;
+    if (is_word(text_[pos_])) {
+      while (pos_ < text_.size() && is_word(text_[pos_])) ++pos_;
+    } else {
+      ++pos_;
+    }
+    return std::string_view(text_).substr(start, pos_ - start);
+  }
+
+  [[noreturn]] void fail(const std::string& msg) const {
+    throw InputError(file_, token_line_, msg);
+  }
+
+  void expect(std::string_view want) {
+    const auto t = next();
+    if (t != want)
+      fail("expected '" + std::string(want) + "' but found '" +
+           (t.empty() ? std::string("end of file") : std::string(t)) + "'");
+  }
+
+  long long integer(const char* what) {
+    const auto t = next();
+    long long v = 0;
+    const auto r = std::from_chars(t.data(), t.data() + t.size(), v);
+    if (t.empty() || r.ec != std::errc() || r.ptr != t.data() + t.size())
+      fail(std::string("expected an integer (") + what + ") but found '" + std::string(t) + "'");
+    return v;
+  }
+
+  double real(const char* what) {
+    const auto t = next();
+    double v = 0;
+    const auto r = std::from_chars(t.data(), t.data() + t.size(), v);
+    if (t.empty() || r.ec != std::errc() || r.ptr != t.data() + t.size() || !std::isfinite(v))
+      fail(std::string("expected a number (") + what + ") but found '" + std::string(t) + "'");
+    return v;
+  }
+
+  std::size_t line() const { return token_line_; }
+
+ private:
+  static bool is_word(char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '.' || c == '+' ||
+           c == '-';
+  }
+  void skip() {
+    while (pos_ < text_.size()) {
+      const char c = text_[pos_];
+      if (c == '\n') {
+        ++line_;
+        ++pos_;
+      } else if (c == '%' || c == '#') {
+        while (pos_ < text_.size() && text_[pos_] != '\n') ++pos_;
+      } else if (std::isspace(static_cast<unsigned char>(c))) {
+        ++pos_;
+      } else {
+        return;
+      }
+    }
+  }
+
+  std::string text_;
+  std::string file_;
+  std::size_t pos_ = 0;
+  std::size_t line_ = 1;
+  std::size_t token_line_ = 1;
+};
+
+}  // namespace
+
+void write_mcsf(const std::filesystem::path& path, const TetMesh& mesh,
+                const McsfFaceTypes& types) {
+  const std::size_t n_tets = mesh.tetrahedra.size();
+  if (mesh.cell_markers.size() != n_tets && !mesh.cell_markers.empty())
+    throw Error("write_mcsf: cell markers do not match the tetrahedra");
+  if (mesh.boundary_face_markers.size() != mesh.boundary_faces.size())
+    throw Error("write_mcsf: boundary face markers do not match the faces");
+
+  // Which tet faces are shared (interior, type 0) and which marker the others carry.
+  std::unordered_map<FaceKey, int, FaceKeyHash> uses;
+  uses.reserve(n_tets * 3);
+  for (const auto& t : mesh.tetrahedra)
+    for (const auto& f : kFace) ++uses[sorted_key(t[f[0]], t[f[1]], t[f[2]])];
+  std::unordered_map<FaceKey, int, FaceKeyHash> face_marker;
+  face_marker.reserve(mesh.boundary_faces.size() * 2);
+  for (std::size_t i = 0; i < mesh.boundary_faces.size(); ++i) {
+    const auto& f = mesh.boundary_faces[i];
+    face_marker[sorted_key(f[0], f[1], f[2])] = mesh.boundary_face_markers[i];
+  }
+
+  write_file_atomically(path, [&](std::ostream& out) {
+    out << "%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%\n"
+           "% Written by molmesh. Material = region (1 molecule, 2 solvent). Face types:\n"
+           "% 0 interior, "
+        << types.molecular_surface << " molecular surface, " << types.outer_sphere
+        << " outer sphere, " << types.active_site << " active site (odd Dirichlet, even Neumann)\n"
+        << "%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%\n\n"
+        << "mcsf_begin=1;\n\n"
+        << "      dim=3;         % intrinsic manifold dimension\n"
+        << "    dimii=3;         % imbedding manifold dimension\n"
+        << " vertices=" << mesh.points.size() << ";         % number of vertices\n"
+        << "simplices=" << n_tets << ";         % number of simplices\n\n"
+        << "vert=[\n"
+        << "%-------- ---- ----------------- ----------------- -----------------\n"
+        << "% Vert-ID Chrt X-Coordinate      Y-Coordinate      Z-Coordinate\n"
+        << "%-------- ---- ----------------- ----------------- -----------------\n";
+    for (std::size_t i = 0; i < mesh.points.size(); ++i) {
+      out << i << " 0";
+      for (int d = 0; d < 3; ++d) write_number(out, mesh.points[i][d]);
+      out << '\n';
+    }
+    out << "];\n\nsimp=[\n"
+        << "%-------- ---- ---- ------------------- ---------------------------------------\n"
+        << "% Simp-ID Grp  Mat  Face-Types          Vertex-Numbers\n"
+        << "%-------- ---- ---- ------------------- ---------------------------------------\n";
+    for (std::size_t t = 0; t < n_tets; ++t) {
+      Tetrahedron tet = mesh.tetrahedra[t];
+      const Vec3& a = mesh.points[tet[0]];
+      if ((mesh.points[tet[1]] - a).dot((mesh.points[tet[2]] - a).cross(mesh.points[tet[3]] - a)) <
+          0.0)
+        std::swap(tet[2], tet[3]);
+      out << t << " 0 " << (mesh.cell_markers.empty() ? 0 : mesh.cell_markers[t]);
+      for (int k = 0; k < 4; ++k) {
+        const auto key = sorted_key(tet[kFace[k][0]], tet[kFace[k][1]], tet[kFace[k][2]]);
+        int type = 0;
+        if (uses[key] == 1) {
+          const auto it = face_marker.find(key);
+          type = type_of_marker(it == face_marker.end() ? markers::kNoMarker : it->second, types);
+        }
+        out << ' ' << type;
+      }
+      for (int v : tet) out << ' ' << v;
+      out << '\n';
+    }
+    out << "];\n\nmcsf_end=1;\n\n";
+  });
+}
+
+TetMesh read_mcsf(const std::filesystem::path& path, const McsfFaceTypes& types) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path.string(), "cannot open the MCSF file");
+  std::ostringstream buffer;
+  buffer << in.rdbuf();
+  Lexer lex(buffer.str(), path.string());
+
+  auto key_value = [&](std::string_view key) {
+    lex.expect(key);
+    lex.expect("=");
+    const long long v = lex.integer(std::string(key).c_str());
+    lex.expect(";");
+    return v;
+  };
+  if (key_value("mcsf_begin") != 1) lex.fail("mcsf_begin must be 1");
+  if (key_value("dim") != 3) lex.fail("only 3-dimensional meshes (dim=3) are supported");
+  if (key_value("dimii") != 3) lex.fail("only meshes embedded in 3-D (dimii=3) are supported");
+  const long long n_vertices = key_value("vertices");
+  const long long n_simplices = key_value("simplices");
+  if (n_vertices <= 0 || n_simplices <= 0 || n_vertices > (1ll << 31) || n_simplices > (1ll << 31))
+    lex.fail("vertex and simplex counts must be positive");
+
+  TetMesh mesh;
+  mesh.points.resize(static_cast<std::size_t>(n_vertices));
+  lex.expect("vert");
+  lex.expect("=");
+  lex.expect("[");
+  for (long long i = 0; i < n_vertices; ++i) {
+    if (lex.integer("vertex id") != i) lex.fail("vertex ids must be 0, 1, 2, ... in order");
+    lex.integer("chart");
+    for (int d = 0; d < 3; ++d) mesh.points[i][d] = lex.real("coordinate");
+  }
+  lex.expect("]");
+  lex.expect(";");
+
+  lex.expect("simp");
+  lex.expect("=");
+  lex.expect("[");
+  mesh.tetrahedra.resize(static_cast<std::size_t>(n_simplices));
+  mesh.cell_markers.resize(static_cast<std::size_t>(n_simplices));
+  std::vector<std::array<int, 4>> face_types(static_cast<std::size_t>(n_simplices));
+  for (long long t = 0; t < n_simplices; ++t) {
+    if (lex.integer("simplex id") != t) lex.fail("simplex ids must be 0, 1, 2, ... in order");
+    lex.integer("group");
+    mesh.cell_markers[t] = static_cast<int>(lex.integer("material"));
+    for (int k = 0; k < 4; ++k) face_types[t][k] = static_cast<int>(lex.integer("face type"));
+    for (int k = 0; k < 4; ++k) {
+      const long long v = lex.integer("vertex number");
+      if (v < 0 || v >= n_vertices)
+        lex.fail("vertex number " + std::to_string(v) + " out of range [0, " +
+                 std::to_string(n_vertices) + ")");
+      mesh.tetrahedra[t][k] = static_cast<int>(v);
+    }
+    const auto& tet = mesh.tetrahedra[t];
+    const Vec3& a = mesh.points[tet[0]];
+    const double det =
+        (mesh.points[tet[1]] - a).dot((mesh.points[tet[2]] - a).cross(mesh.points[tet[3]] - a));
+    if (det == 0.0) lex.fail("simplex " + std::to_string(t) + " is flat (zero volume)");
+    if (det < 0.0) {
+      std::swap(mesh.tetrahedra[t][2], mesh.tetrahedra[t][3]);
+      std::swap(face_types[t][2], face_types[t][3]);
+    }
+  }
+  lex.expect("]");
+  lex.expect(";");
+  if (key_value("mcsf_end") != 1) lex.fail("mcsf_end must be 1");
+
+  mesh.vertex_markers.assign(mesh.points.size(), markers::kNoMarker);
+  for (std::size_t t = 0; t < mesh.tetrahedra.size(); ++t) {
+    const auto& tet = mesh.tetrahedra[t];
+    for (int k = 0; k < 4; ++k) {
+      if (face_types[t][k] == 0) continue;
+      const Triangle f{tet[kFace[k][0]], tet[kFace[k][1]], tet[kFace[k][2]]};
+      const int m = marker_of_type(face_types[t][k], types);
+      mesh.boundary_faces.push_back(f);
+      mesh.boundary_face_markers.push_back(m);
+      for (int v : f)
+        if (marker_priority(m) > marker_priority(mesh.vertex_markers[v]))
+          mesh.vertex_markers[v] = m;
+    }
+  }
+  return mesh;
+}
+
+}  // namespace molmesh
