@@ -1,0 +1,232 @@
+// `molmesh tetmesh`: atoms (through the surface pipeline) or a surface mesh file ->
+// TetGen tetrahedral mesh of the molecule, the solvent, or both (GAMer §2.4).
+#include <chrono>
+#include <filesystem>
+#include <map>
+#include <string>
+
+#include "command_registry.hpp"
+#include "molmesh/core/error.hpp"
+#include "molmesh/io/read_atoms.hpp"
+#include "molmesh/io/sphere_list.hpp"
+#include "molmesh/io/stats_json.hpp"
+#include "molmesh/io/surface_mesh_io.hpp"
+#include "molmesh/io/volume_mesh_io.hpp"
+#include "molmesh/pipeline/surface_pipeline.hpp"
+#include "molmesh/tetmesh/tet_stats.hpp"
+#include "molmesh/tetmesh/tetrahedralize.hpp"
+#include "surface_options.hpp"
+
+namespace molmesh::cli {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+struct TetmeshArgs {
+  std::string input;
+  std::string output;
+  std::string stats;
+  std::string surface_output;
+  std::string active_site;
+  std::string domain = "full";
+  TetMeshOptions tet;
+  double outer_radius = 0.0;
+  double max_volume = 0.0;
+  SurfaceCliOptions surface;
+};
+
+double seconds_since(Clock::time_point t) {
+  return std::chrono::duration<double>(Clock::now() - t).count();
+}
+
+nlohmann::json tet_stats_json(const TetStats& s) {
+  auto keyed = [](const std::map<int, std::size_t>& m) {
+    nlohmann::json j = nlohmann::json::object();
+    for (const auto& [k, v] : m) j[std::to_string(k)] = v;
+    return j;
+  };
+  nlohmann::json j;
+  j["vertices"] = s.vertices;
+  j["tetrahedra"] = s.tetrahedra;
+  j["boundary_faces"] = s.boundary_faces;
+  j["tetrahedra_per_region"] = keyed(s.tets_per_region);
+  j["faces_per_marker"] = keyed(s.faces_per_marker);
+  j["vertices_per_marker"] = keyed(s.vertices_per_marker);
+  j["min_dihedral_deg"] = s.min_dihedral_deg;
+  j["max_dihedral_deg"] = s.max_dihedral_deg;
+  j["dihedral_histogram_10deg"] = s.dihedral_histogram;
+  j["min_volume"] = s.min_volume;
+  j["max_volume"] = s.max_volume;
+  j["inverted_or_flat"] = s.inverted_or_flat;
+  j["min_radius_edge"] = s.min_radius_edge;
+  j["max_radius_edge"] = s.max_radius_edge;
+  j["mean_radius_edge"] = s.mean_radius_edge;
+  j["radius_edge_bins"] = TetStats::kRadiusEdgeBins;
+  j["radius_edge_histogram"] = s.radius_edge_histogram;
+  return j;
+}
+
+void run(const TetmeshArgs& args, const CliContext& ctx) {
+  const Reporter reporter = ctx.reporter();
+  const auto total_start = Clock::now();
+  StageTimings timings;
+  TetMeshOptions options = args.tet;
+  if (args.domain == "interior")
+    options.domain = Domain::interior;
+  else if (args.domain == "exterior")
+    options.domain = Domain::exterior;
+  else
+    options.domain = Domain::full;
+  if (args.outer_radius > 0.0) options.outer_radius = args.outer_radius;
+  if (args.max_volume > 0.0) options.max_volume = args.max_volume;
+  if (!args.active_site.empty()) options.active_site = read_spheres(args.active_site);
+
+  // Fail on a bad output name before the expensive work.
+  {
+    const std::string ext = std::filesystem::path(args.output).extension().string();
+    if (ext != ".m" && ext != ".mcsf" && ext != ".vtu" && ext != ".msh" && ext != ".msh4")
+      throw Error("cannot tell the volume mesh format of '" + args.output + "'; use " +
+                  volume_mesh_extensions());
+  }
+
+  Atoms atoms;
+  SurfaceMesh surface;
+  nlohmann::json input;
+  input["path"] = args.input;
+  auto start = Clock::now();
+  if (is_surface_mesh_path(args.input)) {
+    surface = read_surface_mesh(args.input);
+    timings.emplace_back("read", seconds_since(start));
+    input["kind"] = "surface";
+  } else {
+    atoms = read_atoms(args.input, args.surface.atoms, reporter);
+    timings.emplace_back("read", seconds_since(start));
+    SurfacePipelineResult result = surface_from_atoms(atoms, args.surface.pipeline, reporter);
+    for (const StageRecord& stage : result.stages) timings.emplace_back(stage.name, stage.seconds);
+    surface = std::move(result.surface);
+    input["kind"] = "atoms";
+    input["atoms"] = atoms.size();
+    input["grid_dims"] = result.grid_dims;
+    if (!args.surface_output.empty()) write_surface_mesh(args.surface_output, surface);
+  }
+  input["surface_vertices"] = surface.points.size();
+  input["surface_triangles"] = surface.triangles.size();
+
+  TetMeshReport report;
+  start = Clock::now();
+  const TetMesh mesh = tetrahedralize(surface, atoms, options, reporter, &report);
+  timings.emplace_back("tetrahedralize", seconds_since(start));
+
+  start = Clock::now();
+  reporter.progress("write", 0.0);
+  write_volume_mesh(args.output, mesh);
+  reporter.progress("write", 1.0);
+  timings.emplace_back("write", seconds_since(start));
+
+  if (!args.stats.empty()) {
+    timings.emplace_back("total", seconds_since(total_start));
+    nlohmann::json doc = tet_stats_json(compute_tet_stats(mesh));
+    nlohmann::json tetgen;
+    tetgen["switches"] = report.tetgen_switches;
+    tetgen["seconds"] = report.seconds;
+    tetgen["atoms_given"] = report.atoms_given;
+    tetgen["atoms_as_nodes"] = report.atoms_as_nodes;
+    tetgen["coincident_atoms"] = report.coincident_atoms;
+    tetgen["atoms_outside"] = report.atoms_outside;
+    tetgen["surface_steiner_points"] = report.surface_steiner_points;
+    tetgen["outer_sphere_vertices"] = report.outer_sphere_vertices;
+    tetgen["molecule_size"] = report.molecule_size;
+    tetgen["outer_radius"] = report.outer_radius;
+    doc["tetgen"] = tetgen;
+    doc["domain"] = args.domain;
+    doc["timings_s"] = nlohmann::json::object();
+    for (const auto& [name, seconds] : timings) doc["timings_s"][name] = seconds;
+    input["output"] = args.output;
+    doc["input"] = input;
+    nlohmann::json parameters =
+        atoms.empty() ? nlohmann::json::object() : surface_parameters_json(args.surface);
+    parameters["domain"] = args.domain;
+    parameters["sphere_ratio"] = options.sphere_ratio;
+    parameters["outer_sphere_subdivisions"] = options.outer_sphere_subdivisions;
+    parameters["max_radius_edge_ratio"] = options.max_radius_edge_ratio;
+    parameters["min_dihedral_deg"] = options.min_dihedral_deg;
+    if (options.outer_radius) parameters["outer_radius"] = *options.outer_radius;
+    if (options.max_volume) parameters["max_volume"] = *options.max_volume;
+    parameters["active_site_spheres"] = options.active_site.size();
+    doc["parameters"] = parameters;
+    write_json_file(args.stats, doc);
+  }
+}
+
+const CommandRegistration registration{
+    "tetmesh", [](CLI::App& app, CliContext& ctx) {
+      auto args = std::make_shared<TetmeshArgs>();
+      auto* cmd = app.add_subcommand(
+          "tetmesh",
+          "Tetrahedral mesh (TetGen) of the molecule (interior, every atom centre a node), the "
+          "solvent up to an outer sphere (exterior), or both in one conforming mesh (full)");
+      cmd->add_option("INPUT", args->input,
+                      "Atoms (.pqr, .pdb/.ent, .cif/.mmcif; the surface pipeline runs first with "
+                      "the options below) or a closed surface mesh (.off, .ply, .obj, .stl) used "
+                      "as given")
+          ->required()
+          ->check(CLI::ExistingFile);
+      cmd->add_option("-o,--output", args->output,
+                      "Output volume mesh: .m/.mcsf (FETK MCSF, for APBS/SMOL), .vtu (VTK), "
+                      ".msh (Gmsh 2.2), .msh4 (Gmsh 4.1 written under that name)")
+          ->required()
+          ->type_name("OUT");
+      cmd->add_option("--domain", args->domain,
+                      "interior: the molecule (region 1); exterior: the solvent between the "
+                      "molecular surface and the outer sphere (region 2); full: both")
+          ->check(CLI::IsMember({"interior", "exterior", "full"}))
+          ->capture_default_str();
+      cmd->add_option("--stats", args->stats,
+                      "Write tetrahedron quality (counts per region and marker, dihedral angles, "
+                      "radius-edge ratios, volumes), TetGen report, timings as JSON")
+          ->type_name("FILE.json");
+      cmd->add_option("--sphere-ratio", args->tet.sphere_ratio,
+                      "Outer sphere radius as a multiple of the molecule size (largest distance "
+                      "of an atom centre from their mean; of a surface point for surface input)")
+          ->check(CLI::PositiveNumber)
+          ->capture_default_str();
+      cmd->add_option("--outer-radius", args->outer_radius,
+                      "Outer sphere radius in Å (overrides --sphere-ratio; needed for one atom)")
+          ->check(CLI::PositiveNumber)
+          ->type_name("R");
+      cmd->add_option("--sphere-subdivisions", args->tet.outer_sphere_subdivisions,
+                      "Outer sphere triangulation: icosahedron subdivided L times (10*4^L+2 "
+                      "vertices); coarse keeps the far field coarse")
+          ->check(CLI::Range(0, 7))
+          ->capture_default_str();
+      cmd->add_option("--active-site", args->active_site,
+                      "Spheres (x y z r per line, Å) marking the active site: molecular-surface "
+                      "faces with all three vertices inside get marker 3 (MCSF type 3)")
+          ->check(CLI::ExistingFile)
+          ->type_name("FILE");
+      cmd->add_option("--max-radius-edge", args->tet.max_radius_edge_ratio,
+                      "TetGen -q radius-edge ratio bound (smaller: better tets, more points)")
+          ->check(CLI::PositiveNumber)
+          ->capture_default_str();
+      cmd->add_option("--min-dihedral", args->tet.min_dihedral_deg,
+                      "TetGen -q minimum dihedral angle in degrees (sought by its optimiser)")
+          ->check(CLI::Range(0.0, 70.0))
+          ->capture_default_str();
+      cmd->add_option("--max-volume", args->max_volume,
+                      "TetGen -a: largest tetrahedron volume in Å^3 (default: unbounded)")
+          ->check(CLI::PositiveNumber)
+          ->type_name("V");
+      cmd->add_option("--tetgen-switches", args->tet.tetgen_switches,
+                      "Expert: TetGen switches replacing the ones above (e.g. pYq1.5/15); molmesh "
+                      "adds p, z, n, Q and i (atoms) when missing. Without Y TetGen may split "
+                      "the molecular surface")
+          ->type_name("SW");
+      cmd->add_option("--surface-output", args->surface_output,
+                      "Also write the molecular surface that was meshed (atom input only)")
+          ->type_name("FILE");
+      add_surface_options(*cmd, args->surface);
+      cmd->callback([args, &ctx] { run(*args, ctx); });
+    }};
+
+}  // namespace
+}  // namespace molmesh::cli
