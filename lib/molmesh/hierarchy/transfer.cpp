@@ -273,7 +273,8 @@ SparseMatrix volume_prolongation(const TetMesh& coarse, const TetMesh& fine, Tra
         coarse.tetrahedra[static_cast<std::size_t>(row_tet[static_cast<std::size_t>(f)])];
     const auto lambda = tet_barycentric(coarse, tet, xc);
     // Largest step (up to injection, t = 1) that keeps the tetrahedron's weights >= 0; a
-    // floor keeps the new column meaningful when the fine vertex sits on a face.
+    // floor keeps the new column meaningful when the fine vertex sits on a face (its weights
+    // may then go slightly negative, which keeps exactness).
     double step = 1.0;
     for (int k = 0; k < 4; ++k) {
       if (lambda[k] <= 0) continue;
@@ -283,7 +284,9 @@ SparseMatrix volume_prolongation(const TetMesh& coarse, const TetMesh& fine, Tra
       }
       step = std::min(step, current / lambda[k]);
     }
-    step = std::max(step, 0.1);
+    // Half of that step, so no existing entry is driven to zero (it may be the only entry of
+    // another column).
+    step = std::max(0.5 * step, 0.05);
     for (int k = 0; k < 4; ++k)
       row.emplace_back(tet[static_cast<std::size_t>(k)], -step * lambda[k]);
     row.emplace_back(ci, step);
