@@ -12,6 +12,9 @@ const CommandRegistration registration{"formats", [](CLI::App& app, CliContext&)
     std::puts(
         "atoms in:    .pqr  .pdb .ent .cif .mmcif (optionally .gz; radii from a table)\n"
         "surfaces:    .off .ply .obj .stl (read and write)\n"
+        "volumes:     .dx (OpenDX, APBS layout) .mrc .map .ccp4 (MRC2014/CCP4) (read and write)\n"
+        "spheres:     text, 'x y z radius' per line (keep-spheres, active sites)\n"
+        "radii:       text, 'RESNAME ATOMNAME radius' or 'ELEMENT radius' per line (--radii)\n"
         "see docs/formats.md for the complete table");
   });
 }};
