@@ -11,7 +11,8 @@ namespace {
 
 std::filesystem::path temporary_sibling(const std::filesystem::path& path) {
   std::random_device entropy;
-  auto name = "." + path.filename().string() + ".tmp" + std::to_string(entropy() % 1000000);
+  std::string name = ".";
+  name.append(path.filename().string()).append(".tmp").append(std::to_string(entropy() % 1000000));
   return path.parent_path() / name;
 }
 
