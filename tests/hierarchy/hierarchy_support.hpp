@@ -1,0 +1,98 @@
+#pragma once
+// Checks shared by the real-molecule hierarchy tests (fast and slow).
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "molmesh/hierarchy/hierarchy.hpp"
+
+namespace molmesh::testing {
+
+inline Eigen::MatrixXd coordinates(const std::vector<Vec3>& points) {
+  Eigen::MatrixXd x(static_cast<Eigen::Index>(points.size()), 3);
+  for (std::size_t i = 0; i < points.size(); ++i)
+    x.row(static_cast<Eigen::Index>(i)) = points[i].transpose();
+  return x;
+}
+
+// Row sums, non-empty columns, and linear reproduction: P applied to the coarse coordinates
+// gives the fine coordinates exactly except at fine vertices outside the coarse mesh,
+// which must be few. Returns the number of fine vertices not reproduced.
+inline long check_volume_transfer(const SparseMatrix& p, const TetMesh& coarse, const TetMesh& fine,
+                                  double max_outside_fraction) {
+  EXPECT_EQ(p.rows(), static_cast<Eigen::Index>(fine.points.size()));
+  EXPECT_EQ(p.cols(), static_cast<Eigen::Index>(coarse.points.size()));
+  Eigen::VectorXi column_count = Eigen::VectorXi::Zero(p.cols());
+  for (Eigen::Index r = 0; r < p.rows(); ++r) {
+    double sum = 0.0;
+    for (SparseMatrix::InnerIterator it(p, r); it; ++it) {
+      sum += it.value();
+      if (it.value() != 0.0) ++column_count[it.col()];
+    }
+    EXPECT_NEAR(sum, 1.0, 1e-12) << "row " << r;
+    if (std::abs(sum - 1.0) > 1e-12) break;
+  }
+  EXPECT_EQ((column_count.array() == 0).count(), 0) << "coarse vertices with empty columns";
+  const Eigen::MatrixXd xf = coordinates(fine.points);
+  const Eigen::MatrixXd interpolated = p * coordinates(coarse.points);
+  // An arbitrary linear function, too.
+  const Eigen::Vector3d a(0.3, -1.7, 2.2);
+  const double scale = xf.cwiseAbs().maxCoeff() + 1.0;
+  long outside = 0;
+  for (Eigen::Index i = 0; i < xf.rows(); ++i) {
+    const double position_error = (interpolated.row(i) - xf.row(i)).norm();
+    if (position_error > 1e-9 * scale) {
+      ++outside;
+      continue;
+    }
+    // Inside: the linear function a.x + 4 is reproduced to 1e-9 relative.
+    const double exact = xf.row(i).dot(a) + 4.0;
+    const double got = interpolated.row(i).dot(a) + 4.0;
+    EXPECT_NEAR(got, exact, 1e-9 * std::max(1.0, std::abs(exact) + scale));
+  }
+  EXPECT_LE(static_cast<double>(outside), max_outside_fraction * static_cast<double>(xf.rows()))
+      << "fine vertices outside the coarse mesh";
+  return outside;
+}
+
+inline void check_surface_transfer(const SparseMatrix& p, const HierarchyLevel& coarse,
+                                   const HierarchyLevel& fine) {
+  EXPECT_EQ(p.rows(), static_cast<Eigen::Index>(fine.surface.points.size()));
+  EXPECT_EQ(p.cols(), static_cast<Eigen::Index>(coarse.surface.points.size()));
+  Eigen::VectorXi column_count = Eigen::VectorXi::Zero(p.cols());
+  for (Eigen::Index r = 0; r < p.rows(); ++r) {
+    double sum = 0.0;
+    for (SparseMatrix::InnerIterator it(p, r); it; ++it) {
+      sum += it.value();
+      if (it.value() != 0.0) ++column_count[it.col()];
+    }
+    EXPECT_NEAR(sum, 1.0, 1e-12);
+  }
+  EXPECT_EQ((column_count.array() == 0).count(), 0);
+  // Provenance: coarse vertex c comes from fine vertex provenance[c] and maps by identity.
+  ASSERT_EQ(coarse.surface_provenance.size(), coarse.surface.points.size());
+  for (std::size_t c = 0; c < coarse.surface_provenance.size(); ++c) {
+    const int f = coarse.surface_provenance[c];
+    ASSERT_GE(f, 0);
+    ASSERT_LT(static_cast<std::size_t>(f), fine.surface.points.size());
+    EXPECT_EQ(p.coeff(f, static_cast<Eigen::Index>(c)), 1.0);
+  }
+}
+
+// Runs the independent python reader on `h5`; returns its output, expects exit status 0.
+inline std::string run_python_checker(const std::filesystem::path& h5) {
+  const auto checker = std::filesystem::path(__FILE__).parent_path() / "check_hierarchy.py";
+  const auto out = h5.parent_path() / (h5.stem().string() + "_check.txt");
+  const auto command =
+      "/usr/bin/python3 " + checker.string() + " " + h5.string() + " > " + out.string() + " 2>&1";
+  const int status = std::system(command.c_str());
+  std::ifstream in(out);
+  const std::string text((std::istreambuf_iterator<char>(in)), {});
+  EXPECT_EQ(status, 0) << text;
+  return text;
+}
+
+}  // namespace molmesh::testing
