@@ -5,6 +5,7 @@
 
 #include <Eigen/Geometry>
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -30,27 +31,23 @@ const double kMinTriangleAngle = 1.0 * std::numbers::pi / 180.0;
 // radius); see plan_removal.
 constexpr double kFidelityWeight = 2.0;
 
-// Angle-weighted unit vertex normals, as vertex_normals.hpp defines them, computed on the
+// Angle-weighted unit vertex normal, as vertex_normals.hpp defines it, computed on the
 // editable mesh so that passes need no conversion to a plain mesh.
-void compute_vertex_normals(const HalfedgeMesh& mesh, std::vector<Vec3>& normals) {
-  normals.assign(static_cast<std::size_t>(mesh.vertex_capacity()), Vec3::Zero());
-  tbb::parallel_for(0, mesh.vertex_capacity(), [&](int v) {
-    if (!mesh.vertex_alive(v)) return;
-    Vec3 sum = Vec3::Zero();
-    const Vec3& x = mesh.position(v);
-    const int h0 = mesh.outgoing(v);
-    int h = h0;
-    do {
-      const Vec3 e1 = mesh.position(mesh.head(h)) - x;
-      const Vec3 e2 = mesh.position(mesh.head(HalfedgeMesh::next(h))) - x;
-      const Vec3 n = e1.cross(e2);
-      const double len = n.norm();
-      if (len > 0) sum += std::atan2(len, e1.dot(e2)) * (n / len);
-      h = mesh.rotate_ccw(h);
-    } while (h != h0);
-    const double len = sum.norm();
-    if (len > 0) normals[v] = sum / len;
-  });
+Vec3 vertex_normal(const HalfedgeMesh& mesh, int v) {
+  Vec3 sum = Vec3::Zero();
+  const Vec3& x = mesh.position(v);
+  const int h0 = mesh.outgoing(v);
+  int h = h0;
+  do {
+    const Vec3 e1 = mesh.position(mesh.head(h)) - x;
+    const Vec3 e2 = mesh.position(mesh.head(HalfedgeMesh::next(h))) - x;
+    const Vec3 n = e1.cross(e2);
+    const double len = n.norm();
+    if (len > 0) sum += std::atan2(len, e1.dot(e2)) * (n / len);
+    h = mesh.rotate_ccw(h);
+  } while (h != h0);
+  const double len = sum.norm();
+  return len > 0 ? Vec3(sum / len) : Vec3::Zero();
 }
 
 struct Scratch {
@@ -117,15 +114,6 @@ bool triangles_clash(const HalfedgeMesh& mesh, const Triangle& s, const Triangle
       return true;
   }
   return false;
-}
-
-double triangle_min_angle(const Vec3& a, const Vec3& b, const Vec3& c) {
-  auto angle = [](const Vec3& p, const Vec3& q, const Vec3& r) {
-    const Vec3 u = q - p;
-    const Vec3 w = r - p;
-    return std::atan2(u.cross(w).norm(), u.dot(w));
-  };
-  return std::min({angle(a, b, c), angle(b, c, a), angle(c, a, b)});
 }
 
 // Chooses how to fill the hole left by deleting v, or returns false if no safe filling
@@ -289,6 +277,8 @@ bool plan_removal(const HalfedgeMesh& mesh, int v, Scratch& s, std::vector<Trian
   std::sort(s.around.begin(), s.around.end());
   s.around.erase(std::unique(s.around.begin(), s.around.end()), s.around.end());
   for (const Triangle& t : out) {
+    Vec3 lo = mesh.position(t[0]).cwiseMin(mesh.position(t[1])).cwiseMin(mesh.position(t[2]));
+    Vec3 hi = mesh.position(t[0]).cwiseMax(mesh.position(t[1])).cwiseMax(mesh.position(t[2]));
     const Vec3 n = (mesh.position(t[1]) - mesh.position(t[0]))
                        .cross(mesh.position(t[2]) - mesh.position(t[0]))
                        .normalized();
@@ -312,6 +302,13 @@ bool plan_removal(const HalfedgeMesh& mesh, int v, Scratch& s, std::vector<Trian
           }
           if (n.dot(m) < old_dot) return false;
         }
+        continue;
+      }
+      const Vec3& a = mesh.position(other[0]);
+      const Vec3& b = mesh.position(other[1]);
+      const Vec3& c = mesh.position(other[2]);
+      if ((a.cwiseMax(b).cwiseMax(c).array() < lo.array()).any() ||
+          (a.cwiseMin(b).cwiseMin(c).array() > hi.array()).any()) {
         continue;
       }
       if (triangles_clash(mesh, t, other)) return false;
@@ -383,19 +380,63 @@ CoarsenResult coarsen(const SurfaceMesh& input, const CoarsenOptions& options,
   Scratch main_scratch;
   std::vector<Vec3> normals;
   std::vector<double> value(static_cast<std::size_t>(n), kInf);
-  std::vector<int> candidates, selected, blocked(static_cast<std::size_t>(n), -1),
-      touched(static_cast<std::size_t>(n), -1);
+  std::vector<int> candidates, selected, blocked(static_cast<std::size_t>(n), -1);
+  std::vector<std::uint64_t> color_mask;
+  std::vector<std::vector<int>> classes;
   std::vector<std::vector<Triangle>> plans;
   std::vector<std::uint8_t> planned;
-  std::vector<Triangle> replan;
 
   CoarsenResult result;
   const bool plain_exponents = options.alpha == 1.0 && options.beta == 1.0;
+  // Only stars around deleted vertices change, so after the first pass the normals are
+  // refreshed at the ring vertices of deleted ones (`changed`) and Eq. 6 re-evaluated
+  // within `rings` edges of them (`dirty`); elsewhere last pass's value still holds.
+  std::vector<int> changed, dirty;
+  std::vector<int> stamp(static_cast<std::size_t>(n), -1);
+  normals.assign(static_cast<std::size_t>(n), Vec3::Zero());
+  for (int v = 0; v < n; ++v) {
+    if (mesh.vertex_alive(v)) changed.push_back(v);
+  }
   for (int pass = 0; pass < options.max_passes && options.t0 > 0; ++pass) {
-    compute_vertex_normals(mesh, normals);
-    tbb::parallel_for(0, n, [&](int v) {
+    std::sort(changed.begin(), changed.end());
+    changed.erase(std::unique(changed.begin(), changed.end()), changed.end());
+    tbb::parallel_for(std::size_t{0}, changed.size(), [&](std::size_t i) {
+      const int v = changed[i];
+      if (mesh.vertex_alive(v)) normals[v] = vertex_normal(mesh, v);
+    });
+    if (pass == 0) {
+      dirty = changed;
+    } else {
+      dirty.clear();
+      for (int v : changed) {
+        if (mesh.vertex_alive(v) && stamp[v] != pass) {
+          stamp[v] = pass;
+          dirty.push_back(v);
+        }
+      }
+      std::size_t begin = 0;
+      for (int r = 0; r < options.rings; ++r) {
+        const std::size_t end = dirty.size();
+        for (std::size_t i = begin; i < end; ++i) {
+          const int u = dirty[i];
+          const int h0 = mesh.outgoing(u);
+          int h = h0;
+          do {
+            const int w = mesh.head(h);
+            if (stamp[w] != pass) {
+              stamp[w] = pass;
+              dirty.push_back(w);
+            }
+            h = mesh.rotate_ccw(h);
+          } while (h != h0);
+        }
+        begin = end;
+      }
+    }
+    tbb::parallel_for(std::size_t{0}, dirty.size(), [&](std::size_t i) {
+      const int v = dirty[i];
       value[v] = kInf;
-      if (!mesh.vertex_alive(v) || locked[v]) return;
+      if (locked[v]) return;
       Scratch& s = scratch.local();
       const Vec3& x = mesh.position(v);
       double longest = 0;
@@ -415,6 +456,7 @@ CoarsenResult coarsen(const SurfaceMesh& input, const CoarsenOptions& options,
       value[v] = plain_exponents ? longest * ratio
                                  : std::pow(longest, options.alpha) * std::pow(ratio, options.beta);
     });
+    changed.clear();
 
     candidates.clear();
     for (int v = 0; v < n; ++v) {
@@ -437,38 +479,44 @@ CoarsenResult coarsen(const SurfaceMesh& input, const CoarsenOptions& options,
       } while (h != h0);
     }
 
-    plans.resize(selected.size());
-    planned.assign(selected.size(), 0);
-    tbb::parallel_for(std::size_t{0}, selected.size(), [&](std::size_t i) {
-      planned[i] = plan_removal(mesh, selected[i], scratch.local(), plans[i]) ? 1 : 0;
-    });
-
-    // Apply in priority order. A plan computed before this pass's earlier deletions is
-    // still exact unless one of them changed a star around the hole (a ring vertex of the
-    // hole was touched); then it is recomputed now. Either way the outcome equals a purely
-    // sequential run, whatever the thread count.
-    std::size_t removed_this_pass = 0;
-    for (std::size_t i = 0; i < selected.size(); ++i) {
-      const int v = selected[i];
-      if (component_size[component[v]] <= 4) continue;
+    // Colour the selection so that two vertices of one colour share no ring vertex: their
+    // holes, the faces around the holes, and the edges a filling may create are then
+    // disjoint, so a colour class is planned in parallel on the current mesh and applied
+    // in priority order with exactly the outcome of a sequential run, whatever the
+    // thread count. Classes run in colour order, each seeing the previous ones' edits.
+    color_mask.assign(static_cast<std::size_t>(n), 0);
+    for (auto& members : classes) members.clear();
+    for (int v : selected) {
       mesh.one_ring(v, main_scratch.verts);
-      bool stale = false;
-      for (int r : main_scratch.verts) stale = stale || touched[r] == pass;
-      const std::vector<Triangle>* plan = &plans[i];
-      if (stale) {
-        if (!plan_removal(mesh, v, main_scratch, replan)) continue;
-        plan = &replan;
-      } else if (!planned[i]) {
-        continue;
+      std::uint64_t used = 0;
+      for (int r : main_scratch.verts) used |= color_mask[r];
+      if (~used == 0) continue;  // 64 colours taken around v: leave it to the next pass
+      const int color = std::countr_zero(~used);
+      for (int r : main_scratch.verts) color_mask[r] |= std::uint64_t{1} << color;
+      if (static_cast<int>(classes.size()) <= color) classes.resize(color + 1);
+      classes[color].push_back(v);
+    }
+
+    std::size_t removed_this_pass = 0;
+    for (const std::vector<int>& members : classes) {
+      plans.resize(std::max(plans.size(), members.size()));
+      planned.assign(members.size(), 0);
+      tbb::parallel_for(std::size_t{0}, members.size(), [&](std::size_t i) {
+        planned[i] = plan_removal(mesh, members[i], scratch.local(), plans[i]) ? 1 : 0;
+      });
+      for (std::size_t i = 0; i < members.size(); ++i) {
+        const int v = members[i];
+        if (!planned[i] || component_size[component[v]] <= 4) continue;
+        try {
+          mesh.remove_vertex(v, plans[i]);
+        } catch (const Error&) {
+          continue;  // the gateway refused (cannot happen for a valid plan): keep v
+        }
+        value[v] = kInf;
+        for (const Triangle& t : plans[i]) changed.insert(changed.end(), t.begin(), t.end());
+        --component_size[component[v]];
+        ++removed_this_pass;
       }
-      try {
-        mesh.remove_vertex(v, *plan);
-      } catch (const Error&) {
-        continue;  // the gateway refused (a conflict the plan could not see): keep v
-      }
-      for (int r : main_scratch.verts) touched[r] = pass;
-      --component_size[component[v]];
-      ++removed_this_pass;
     }
     result.removed += removed_this_pass;
     result.passes = pass + 1;

@@ -8,15 +8,6 @@
 namespace molmesh {
 namespace {
 
-double min_angle(const Vec3& a, const Vec3& b, const Vec3& c) {
-  auto angle = [](const Vec3& p, const Vec3& q, const Vec3& r) {
-    const Vec3 u = q - p;
-    const Vec3 w = r - p;
-    return std::atan2(u.cross(w).norm(), u.dot(w));
-  };
-  return std::min({angle(a, b, c), angle(b, c, a), angle(c, a, b)});
-}
-
 struct Quad {
   int a, b, c, d;  // edge a-b, opposite corners c (left of a->b) and d (right)
 };
@@ -32,8 +23,8 @@ std::pair<double, double> pair_min_angles(const HalfedgeMesh& mesh, const Quad& 
   const Vec3& b = mesh.position(q.b);
   const Vec3& c = mesh.position(q.c);
   const Vec3& d = mesh.position(q.d);
-  return {std::min(min_angle(a, b, c), min_angle(b, a, d)),
-          std::min(min_angle(a, d, c), min_angle(d, b, c))};
+  return {std::min(triangle_min_angle(a, b, c), triangle_min_angle(b, a, d)),
+          std::min(triangle_min_angle(a, d, c), triangle_min_angle(d, b, c))};
 }
 
 bool touches_frozen(const Quad& q, std::span<const std::uint8_t> frozen) {
@@ -69,6 +60,23 @@ std::size_t sweep(HalfedgeMesh& mesh, const FlipOptions& options,
 }
 
 }  // namespace
+
+// The smallest angle lies opposite the shortest edge and is at most 60°, so it is
+// asin(2·area / (product of the two other edges)): one asin instead of three atan2.
+double triangle_min_angle(const Vec3& a, const Vec3& b, const Vec3& c) {
+  const double ab = (b - a).squaredNorm(), bc = (c - b).squaredNorm(), ca = (a - c).squaredNorm();
+  const double twice_area = (b - a).cross(c - a).norm();
+  double adjacent;
+  if (ab <= bc && ab <= ca) {
+    adjacent = bc * ca;
+  } else if (bc <= ca) {
+    adjacent = ab * ca;
+  } else {
+    adjacent = ab * bc;
+  }
+  if (!(adjacent > 0)) return 0.0;
+  return std::asin(std::min(1.0, twice_area / std::sqrt(adjacent)));
+}
 
 bool flip_is_geometrically_safe(const HalfedgeMesh& mesh, int h, double max_dihedral_deg) {
   if (!mesh.can_flip(h)) return false;

@@ -42,6 +42,9 @@ std::size_t flip_edges_for_valence(HalfedgeMesh& mesh, const FlipOptions& option
                                    double min_angle_deg = 30.0,
                                    std::span<const std::uint8_t> frozen = {});
 
+// Smallest interior angle of a triangle in radians (0 for a degenerate one).
+double triangle_min_angle(const Vec3& a, const Vec3& b, const Vec3& c);
+
 // The gate shared by both strategies: the flip of the edge of halfedge h is topologically
 // legal and both the old and the new pair of triangles bend by at most max_dihedral_deg
 // (and the new pair does not fold over the old one).
