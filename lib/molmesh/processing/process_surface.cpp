@@ -8,6 +8,7 @@
 #include "molmesh/core/error.hpp"
 #include "molmesh/processing/coarsen.hpp"
 #include "molmesh/processing/edge_flips.hpp"
+#include "molmesh/processing/halfedge_mesh.hpp"
 
 namespace molmesh {
 namespace {
@@ -62,7 +63,21 @@ ProcessingResult process_surface(const SurfaceMesh& input, const ProcessingOptio
     pass.sweeps = sweeps;
     timer.run("improve" + suffix, [&] { improve_angles(result.mesh, pass, reporter); });
     if (options.flips) {
-      timer.run("flip" + suffix, [&] { flip_edges_for_angles(result.mesh, flips); });
+      timer.run("flip" + suffix, [&] {
+        if (!options.valence_flips) {
+          flip_edges_for_angles(result.mesh, flips);
+          return;
+        }
+        // Valence near 6 is what lets relocation reach ~60° angles; the angle flips then
+        // repair whatever the valence flips left sharp.
+        HalfedgeMesh editable(result.mesh);
+        flip_edges_for_valence(editable, flips, options.valence_flip_min_angle_deg);
+        flip_edges_for_angles(editable, flips);
+        HalfedgeMesh::Compacted compact = editable.to_surface_mesh();
+        for (int& p : compact.new_to_old) p = result.provenance[p];
+        result.mesh = std::move(compact.mesh);
+        result.provenance = std::move(compact.new_to_old);
+      });
     }
   };
 

@@ -29,6 +29,9 @@ struct ProcessingOptions {
   int initial_sweeps = 3;
   NormalSmoothingOptions smoothing;
   bool flips = true;  // edge flips for angles after each improvement
+  // Also flip towards valence 6 (never across ridges, never below this smaller min angle).
+  bool valence_flips = true;
+  double valence_flip_min_angle_deg = 30.0;
   // Final passes of improvement + flips aimed at the worst triangles (see docs/processing.md).
   int cleanup_rounds = 3;
   bool record_stages = true;  // compute SurfaceStats after every stage
