@@ -70,22 +70,77 @@ TEST(MarchingCubes, ValuesExactlyAtIsovalueGiveNoDegenerateTriangles) {
   }
 }
 
+// F = 1 exactly at distance r. Linear interpolation along an edge of length h misplaces
+// the crossing by at most h^2 |F''| / (8 |F'|); projected on the radius this is at most
+// h^2 (1 + 2|B|) / (8 r) (docs/surface.md), plus the node gap of 1e-3 h.
 TEST(MarchingCubes, SingleAtomSphere) {
-  const double r = 2.0;
-  BlurOptions options;
-  options.spacing = 0.1;
-  const Grid g = blur_atoms({make_atom(0.3, -0.2, 0.1, r)}, options);
-  const SurfaceMesh mesh = marching_cubes(g, 1.0);
+  const double r = 2.0, b = -0.5;
+  const Vec3 c(0.3, -0.2, 0.1);
+  for (double h : {0.1, 0.25, 0.5}) {
+    BlurOptions options;
+    options.spacing = h;
+    const Grid g = blur_atoms({make_atom(c.x(), c.y(), c.z(), r)}, options);
+    const SurfaceMesh mesh = marching_cubes(g, 1.0);
+    const SurfaceStats s = compute_surface_stats(mesh);
+    EXPECT_TRUE(s.closed);
+    EXPECT_TRUE(s.manifold);
+    EXPECT_EQ(s.components, 1);
+    EXPECT_EQ(s.euler_characteristic, 2);
+    EXPECT_GT(s.volume, 0.0);  // outward normals
+    double worst = 0.0;
+    for (const Vec3& p : mesh.points) worst = std::max(worst, std::abs((p - c).norm() - r));
+    EXPECT_LE(worst, h * h * (1 + 2 * std::abs(b)) / (8 * r) + 1e-3 * h) << "h = " << h;
+    if (h == 0.1) {
+      EXPECT_NEAR(s.area, 4 * M_PI * r * r, 0.01 * 4 * M_PI * r * r);
+      EXPECT_NEAR(s.volume, 4.0 / 3.0 * M_PI * r * r * r, 0.01 * 4.0 / 3.0 * M_PI * r * r * r);
+    }
+  }
+}
+
+TEST(MarchingCubes, OverlappingAtomsMakeOneGenusZeroSurface) {
+  const std::vector<Atoms> cases = {
+      {make_atom(0, 0, 0, 1.6), make_atom(2.0, 0.3, 0, 1.4)},
+      {make_atom(0, 0, 0, 1.6), make_atom(2.0, 0.3, 0, 1.4), make_atom(1.0, 1.9, 0.5, 1.8)}};
+  for (const Atoms& atoms : cases) {
+    const SurfaceMesh mesh = marching_cubes(blur_atoms(atoms, {}), 1.0);
+    const SurfaceStats s = compute_surface_stats(mesh);
+    EXPECT_TRUE(s.closed);
+    EXPECT_TRUE(s.manifold);
+    EXPECT_EQ(s.components, 1);
+    EXPECT_EQ(s.euler_characteristic, 2);  // genus 0
+    EXPECT_GT(s.volume, 0.0);
+  }
+}
+
+TEST(MarchingCubes, InsideOnTheGridBoundaryIsClosedAndWarned) {
+  Grid g;
+  g.dims = {6, 7, 8};
+  g.values.assign(g.size(), 2.0);  // everything inside
+  int warnings = 0;
+  Reporter reporter;
+  reporter.on_warning = [&](std::string_view) { ++warnings; };
+  const SurfaceMesh mesh = marching_cubes(g, 1.0, reporter);
   const SurfaceStats s = compute_surface_stats(mesh);
+  EXPECT_EQ(warnings, 1);
   EXPECT_TRUE(s.closed);
   EXPECT_TRUE(s.manifold);
-  EXPECT_EQ(s.components, 1);
   EXPECT_EQ(s.euler_characteristic, 2);
-  EXPECT_NEAR(s.area, 4 * M_PI * r * r, 0.01 * 4 * M_PI * r * r);
-  EXPECT_NEAR(s.volume, 4.0 / 3.0 * M_PI * r * r * r, 0.01 * 4.0 / 3.0 * M_PI * r * r * r);
-  double worst = 0.0;
-  for (const Vec3& p : mesh.points) worst = std::max(worst, std::abs((p - Vec3(0.3, -0.2, 0.1)).norm() - r));
-  std::printf("worst radial error %g\n", worst);
+  EXPECT_GT(s.volume, 5.0 * 6.0 * 7.0);  // the box, closed beyond the last samples
+}
+
+TEST(MarchingCubes, SameMeshWithOneAndTwoThreads) {
+  const Grid g = random_grid(20, 9);
+  SurfaceMesh one, two;
+  {
+    tbb::global_control c(tbb::global_control::max_allowed_parallelism, 1);
+    one = marching_cubes(g, 1.0);
+  }
+  {
+    tbb::global_control c(tbb::global_control::max_allowed_parallelism, 2);
+    two = marching_cubes(g, 1.0);
+  }
+  EXPECT_TRUE(one.points == two.points);
+  EXPECT_TRUE(one.triangles == two.triangles);
 }
 
 }  // namespace

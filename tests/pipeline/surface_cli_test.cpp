@@ -1,0 +1,105 @@
+// The `surface` and `stats` commands, run as a user would.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <set>
+#include <string>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+int run(const std::string& args, std::string* out = nullptr) {
+  const std::string cmd = std::string(MOLMESH_CLI_PATH) + " " + args + " 2>/dev/null";
+  FILE* pipe = popen(cmd.c_str(), "r");
+  if (!pipe) return -1;
+  std::string text;
+  char buf[4096];
+  std::size_t n;
+  while ((n = fread(buf, 1, sizeof buf, pipe)) > 0) text.append(buf, n);
+  const int status = pclose(pipe);
+  if (out) *out = text;
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+struct TempDir {
+  fs::path path = fs::temp_directory_path() / ("molmesh_surface_cli_" + std::to_string(getpid()));
+  TempDir() { fs::create_directories(path); }
+  ~TempDir() { fs::remove_all(path); }
+};
+
+TEST(SurfaceCli, WritesMeshAndStatsJson) {
+  TempDir dir;
+  const fs::path off = dir.path / "fas2.off";
+  const fs::path json = dir.path / "fas2.json";
+  ASSERT_EQ(run("-q surface " + std::string(MOLMESH_TEST_DATA_DIR) + "/fas2.pqr -o " +
+                off.string() + " --raw --stats " + json.string()),
+            0);
+  ASSERT_TRUE(fs::exists(off));
+  std::ifstream in(json);
+  const nlohmann::json doc = nlohmann::json::parse(in);
+  const std::set<std::string> required = {"vertices",
+                                          "triangles",
+                                          "min_angle_deg",
+                                          "max_angle_deg",
+                                          "angle_histogram_percent",
+                                          "fraction_angles_40_80",
+                                          "area",
+                                          "volume",
+                                          "components",
+                                          "euler_characteristic",
+                                          "closed",
+                                          "manifold",
+                                          "timings_s",
+                                          "input",
+                                          "parameters"};
+  std::set<std::string> keys;
+  for (const auto& item : doc.items()) keys.insert(item.key());
+  EXPECT_EQ(keys, required);
+  EXPECT_TRUE(doc["closed"].get<bool>());
+  EXPECT_TRUE(doc["manifold"].get<bool>());
+  EXPECT_GT(doc["volume"].get<double>(), 0.0);
+  EXPECT_EQ(doc["angle_histogram_percent"].size(), 18u);
+  double percent = 0.0;
+  for (const auto& v : doc["angle_histogram_percent"]) percent += v.get<double>();
+  EXPECT_NEAR(percent, 100.0, 1e-6);
+  for (const char* stage : {"read", "blur", "marching cubes", "write", "total"})
+    EXPECT_TRUE(doc["timings_s"].contains(stage)) << stage;
+  EXPECT_EQ(doc["parameters"]["spacing"].get<double>(), 0.5);
+
+  // `stats --json` on the written mesh agrees with the --stats file.
+  std::string out;
+  ASSERT_EQ(run("stats --json " + off.string(), &out), 0);
+  const nlohmann::json again = nlohmann::json::parse(out);
+  EXPECT_EQ(again["vertices"], doc["vertices"]);
+  EXPECT_EQ(again["triangles"], doc["triangles"]);
+  EXPECT_EQ(again["euler_characteristic"], doc["euler_characteristic"]);
+  EXPECT_NEAR(again["area"].get<double>(), doc["area"].get<double>(),
+              1e-6 * doc["area"].get<double>());
+  ASSERT_EQ(run("stats " + off.string(), &out), 0);
+  EXPECT_NE(out.find("manifold"), std::string::npos);
+}
+
+TEST(SurfaceCli, ExitCodes) {
+  TempDir dir;
+  const std::string data = MOLMESH_TEST_DATA_DIR;
+  EXPECT_EQ(run("surface " + data + "/missing.pqr -o " + (dir.path / "x.off").string()), 2);
+  EXPECT_EQ(run("surface " + data + "/fas2.pqr -o " + (dir.path / "x.off").string() +
+                " --blobbyness 0.5"),
+            2);
+  const fs::path bad = dir.path / "bad.pqr";
+  std::ofstream(bad) << "ATOM      1  N   ALA     1      nonsense\n";
+  EXPECT_EQ(run("surface " + bad.string() + " -o " + (dir.path / "x.off").string()), 3);
+  EXPECT_EQ(run("surface " + data + "/1a1p.pqr -o " + (dir.path / "x.unknown").string()), 1);
+  EXPECT_EQ(run("surface " + data + "/1a1p.pqr --raw -o " +
+                (dir.path / "no_such_dir" / "x.off").string()),
+            4);
+  EXPECT_FALSE(fs::exists(dir.path / "x.off"));
+}
+
+}  // namespace
