@@ -8,6 +8,7 @@
 #include "molmesh/io/read_atoms.hpp"
 #include "molmesh/io/stats_json.hpp"
 #include "molmesh/io/surface_mesh_io.hpp"
+#include "molmesh/io/volume_io.hpp"
 #include "molmesh/pipeline/surface_pipeline.hpp"
 #include "surface_options.hpp"
 
@@ -20,6 +21,7 @@ struct SurfaceArgs {
   std::string input;
   std::string output;
   std::string stats;
+  std::string write_volume;
   SurfaceCliOptions options;
 };
 
@@ -35,11 +37,30 @@ void run(const SurfaceArgs& args, const CliContext& ctx) {
   const auto total_start = Clock::now();
   StageTimings timings;
 
+  if (!args.write_volume.empty() && !is_volume_path(args.write_volume))
+    throw molmesh::Error("cannot tell the volume format from '" + args.write_volume +
+                         "': use .dx, .mrc or .map");
+  // A scalar volume (.dx, .mrc, .map) is contoured directly (GAMer Fig. 1's second input).
+  const bool volume_input = is_volume_path(args.input);
   auto start = Clock::now();
-  const Atoms atoms = read_atoms(args.input, args.options.atoms, reporter);
+  Atoms atoms;
+  Grid volume;
+  if (volume_input) {
+    volume = read_volume(args.input);
+  } else {
+    atoms = read_atoms(args.input, args.options.atoms, reporter);
+  }
   timings.emplace_back("read", seconds_since(start));
 
-  const SurfacePipelineResult result = surface_from_atoms(atoms, args.options.pipeline, reporter);
+  SurfacePipelineOptions pipeline = args.options.pipeline;
+  pipeline.keep_volume = !args.write_volume.empty() && !volume_input;
+  SurfacePipelineResult result = volume_input ? surface_from_grid(volume, pipeline, reporter)
+                                              : surface_from_atoms(atoms, pipeline, reporter);
+  if (!args.write_volume.empty()) {
+    start = Clock::now();
+    write_volume(args.write_volume, volume_input ? volume : result.volume);
+    timings.emplace_back("write volume", seconds_since(start));
+  }
   for (const StageRecord& stage : result.stages) timings.emplace_back(stage.name, stage.seconds);
 
   start = Clock::now();
@@ -54,7 +75,7 @@ void run(const SurfaceArgs& args, const CliContext& ctx) {
     nlohmann::json input;
     input["path"] = args.input;
     input["atoms"] = atoms.size();
-    input["grid_dims"] = result.grid_dims;
+    input["grid_dims"] = volume_input ? volume.dims : result.grid_dims;
     input["raw_surface"] = to_json(compute_surface_stats(result.raw));
     input["output"] = args.output;
     write_json_file(args.stats,
@@ -68,8 +89,12 @@ const CommandRegistration registration{
       auto* cmd = app.add_subcommand(
           "surface",
           "Molecular surface mesh from atoms: Gaussian blurring (GAMer Eq. 1), marching cubes, "
-          "then surface processing unless --raw");
-      cmd->add_option("INPUT", args->input, "Atoms: .pqr, .pdb/.ent, .cif/.mmcif (optionally .gz)")
+          "then surface processing unless --raw. A scalar volume (.dx, .mrc, .map) is contoured "
+          "at --isovalue instead of blurring atoms.");
+      cmd->add_option(
+             "INPUT", args->input,
+             "Atoms: .pqr, .pdb/.ent, .cif/.mmcif (optionally .gz); or a scalar volume "
+             ".dx/.mrc/.map whose level --isovalue is the surface (inside = larger values)")
           ->required()
           ->check(CLI::ExistingFile);
       cmd->add_option("-o,--output", args->output, "Output surface mesh (.off, .ply, .obj, .stl)")
@@ -78,6 +103,10 @@ const CommandRegistration registration{
       cmd->add_option("--stats", args->stats,
                       "Write surface metrics, stage timings and parameters as JSON to this file")
           ->type_name("FILE.json");
+      cmd->add_option("--write-volume", args->write_volume,
+                      "Also write the blurred volume (or the input volume) to this .dx or .mrc "
+                      "file, e.g. to contour it again or view it")
+          ->type_name("FILE");
       add_surface_options(*cmd, args->options);
       cmd->callback([args, &ctx] { run(*args, ctx); });
     }};

@@ -53,12 +53,13 @@ SurfacePipelineResult surface_from_atoms(const Atoms& atoms, const SurfacePipeli
   BlurOptions blur = options.blur;
   blur.isovalue = options.isovalue;
   const auto start = Clock::now();
-  const Grid grid = options.blur_method == BlurMethod::kFast
-                        ? fast_blur(atoms, blur, SplatMethod::kTrilinear, reporter)
-                        : blur_atoms(atoms, blur, reporter);
+  Grid grid = options.blur_method == BlurMethod::kFast
+                  ? fast_blur(atoms, blur, SplatMethod::kTrilinear, reporter)
+                  : blur_atoms(atoms, blur, reporter);
   result.stages.push_back({"blur", seconds_since(start), std::nullopt});
   result.grid_dims = grid.dims;
   extract_and_process(grid, options, reporter, result);
+  if (options.keep_volume) result.volume = std::move(grid);
   return result;
 }
 

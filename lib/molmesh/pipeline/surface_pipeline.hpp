@@ -25,6 +25,7 @@ struct SurfacePipelineOptions {
   double isovalue = 1.0;
   double min_cavity_volume = 0.0;  // Å³; cavities enclosing less are dropped; 0 keeps all
   bool raw = false;                // stop after marching cubes (and cavity removal)
+  bool keep_volume = false;        // return the blurred volume in SurfacePipelineResult::volume
   // Processing options (quality improvement, coarsening, smoothing) go here.
 };
 
@@ -39,6 +40,7 @@ struct SurfacePipelineResult {
   SurfaceMesh surface;  // final surface (== raw when options.raw)
   std::vector<StageRecord> stages;
   std::array<int, 3> grid_dims{0, 0, 0};  // the blurred volume's size (0 for volume input)
+  Grid volume;  // the blurred volume, only with options.keep_volume (atoms input)
 };
 
 SurfacePipelineResult surface_from_atoms(const Atoms& atoms, const SurfacePipelineOptions& options,
