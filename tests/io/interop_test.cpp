@@ -65,7 +65,7 @@ TEST(Interop, MeshioReadsOurSurfaceFiles) {
   for (const char* ext : {"off", "ply", "obj", "stl"}) {
     const auto path = test::scratch_dir() / (std::string("torus.") + ext);
     write_surface_mesh(path, mesh);
-    files += "'" + path.string() + "',";
+    files.append("'").append(path.string()).append("',");
   }
   const std::string out = run_python(
       "import meshio, numpy as np\n"
