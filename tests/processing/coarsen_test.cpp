@@ -1,6 +1,7 @@
 #include "molmesh/processing/coarsen.hpp"
 
 #include <gtest/gtest.h>
+#include <tbb/global_control.h>
 
 #include <algorithm>
 #include <cmath>
@@ -144,10 +145,15 @@ TEST(Coarsen, RealMoleculeHalvesAndKeepsTopology) {
   EXPECT_NEAR(after.volume, before.volume, 0.02 * before.volume);
 }
 
-TEST(Coarsen, IsDeterministic) {
+TEST(Coarsen, IsDeterministicAndThreadCountIndependent) {
   const SurfaceMesh raw = raw_surface("1a1p.pqr");
   const CoarsenResult a = coarsen(raw, CoarsenOptions{});
-  const CoarsenResult b = coarsen(raw, CoarsenOptions{});
+  CoarsenResult b;
+  {
+    // One thread must give exactly what the full pool gives.
+    tbb::global_control one(tbb::global_control::max_allowed_parallelism, 1);
+    b = coarsen(raw, CoarsenOptions{});
+  }
   EXPECT_EQ(a.provenance, b.provenance);
   EXPECT_EQ(a.mesh.triangles, b.mesh.triangles);
 }
