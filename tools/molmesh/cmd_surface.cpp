@@ -78,8 +78,18 @@ void run(const SurfaceArgs& args, const CliContext& ctx) {
     input["grid_dims"] = volume_input ? volume.dims : result.grid_dims;
     input["raw_surface"] = to_json(compute_surface_stats(result.raw));
     input["output"] = args.output;
-    write_json_file(args.stats,
-                    stats_document(stats, timings, input, surface_parameters_json(args.options)));
+    nlohmann::json document =
+        stats_document(stats, timings, input, surface_parameters_json(args.options));
+    document["dislocation_max"] = result.dislocation.max;
+    document["dislocation_mean"] = result.dislocation.mean;
+    nlohmann::json stages = nlohmann::json::array();
+    for (const StageRecord& stage : result.stages) {
+      stages.push_back({{"name", stage.name},
+                        {"seconds", stage.seconds},
+                        {"stats", stage.stats ? to_json(*stage.stats) : nlohmann::json()}});
+    }
+    document["stages"] = std::move(stages);
+    write_json_file(args.stats, document);
   }
 }
 

@@ -56,6 +56,36 @@ void add_surface_pipeline_options(CLI::App& cmd, SurfacePipelineOptions& options
                                   CLI::ignore_case))
       ->capture_default_str()
       ->type_name("exact|fast");
+  cmd.add_option("--coarsen", options.processing.t0,
+                 "Coarsening thresholds T0 of Eq. 6, comma-separated: one round of improve -> "
+                 "coarsen -> smooth -> improve per value (larger T0 deletes more vertices; "
+                 "the paper uses 0.2 once)")
+      ->delimiter(',')
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str()
+      ->type_name("T0[,T0...]");
+  cmd.add_option("--rings", options.processing.rings,
+                 "Neighbourhood (in edge rings) of the local structure tensor that detects "
+                 "features, for coarsening and quality improvement")
+      ->check(CLI::Range(1, 10))
+      ->capture_default_str()
+      ->type_name("K");
+  cmd.add_option("--alpha", options.processing.alpha,
+                 "Exponent of the longest incident edge in Eq. 6 (weight of sparseness)")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str()
+      ->type_name("A");
+  cmd.add_option("--beta", options.processing.beta,
+                 "Exponent of lambda2/lambda1 in Eq. 6 (weight of curvature: larger keeps "
+                 "curved regions denser)")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str()
+      ->type_name("B");
+  cmd.add_option("--keep-spheres", options.keep_spheres_file,
+                 "Sphere list (docs/formats.md): no vertex inside any sphere is removed by "
+                 "coarsening, so e.g. an active site stays finely meshed")
+      ->check(CLI::ExistingFile)
+      ->type_name("FILE");
 }
 
 void add_surface_options(CLI::App& cmd, SurfaceCliOptions& options) {
@@ -72,6 +102,11 @@ nlohmann::json surface_parameters_json(const SurfaceCliOptions& options) {
   j["min_cavity_volume"] = options.pipeline.min_cavity_volume;
   j["blur"] = options.pipeline.blur_method == BlurMethod::kFast ? "fast" : "exact";
   j["raw"] = options.pipeline.raw;
+  j["coarsen"] = options.pipeline.processing.t0;
+  j["rings"] = options.pipeline.processing.rings;
+  j["alpha"] = options.pipeline.processing.alpha;
+  j["beta"] = options.pipeline.processing.beta;
+  j["keep_spheres"] = options.pipeline.keep_spheres_file;
   j["radii"] = options.atoms.radii_file ? options.atoms.radii_file->string() : std::string();
   j["hetatm"] = options.atoms.include_hetatm;
   j["waters"] = options.atoms.include_waters;

@@ -5,6 +5,7 @@
 #include <utility>
 
 #include "molmesh/core/error.hpp"
+#include "molmesh/io/sphere_list.hpp"
 #include "molmesh/surface/components.hpp"
 #include "molmesh/surface/marching_cubes.hpp"
 
@@ -40,9 +41,22 @@ void extract_and_process(const Grid& grid, const SurfacePipelineOptions& options
   }
 
   result.raw = std::move(raw);
-  // The processing stages (quality improvement, coarsening, smoothing) run here on the
-  // non-raw path; until they exist the final surface is the raw one.
-  result.surface = result.raw;
+  if (options.raw) {
+    result.surface = result.raw;
+    return;
+  }
+  ProcessingOptions processing = options.processing;
+  if (!options.keep_spheres_file.empty()) {
+    for (const Sphere& s : read_spheres(options.keep_spheres_file))
+      processing.keep_spheres.push_back(s);
+  }
+  ProcessingResult processed = process_surface(result.raw, processing, reporter);
+  for (ProcessingStage& stage : processed.stages)
+    result.stages.push_back({std::move(stage.name), stage.seconds, stage.stats});
+  start = Clock::now();
+  result.dislocation = measure_dislocation(processed.mesh, result.raw);
+  result.stages.push_back({"dislocation", seconds_since(start), std::nullopt});
+  result.surface = std::move(processed.mesh);
 }
 
 }  // namespace

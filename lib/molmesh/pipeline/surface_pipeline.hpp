@@ -9,6 +9,8 @@
 
 #include "molmesh/atoms/atom.hpp"
 #include "molmesh/core/reporter.hpp"
+#include "molmesh/processing/dislocation.hpp"
+#include "molmesh/processing/process_surface.hpp"
 #include "molmesh/surface/surface_mesh.hpp"
 #include "molmesh/surface/surface_stats.hpp"
 #include "molmesh/volume/fast_blur.hpp"
@@ -26,7 +28,10 @@ struct SurfacePipelineOptions {
   double min_cavity_volume = 0.0;  // Å³; cavities enclosing less are dropped; 0 keeps all
   bool raw = false;                // stop after marching cubes (and cavity removal)
   bool keep_volume = false;        // return the blurred volume in SurfacePipelineResult::volume
-  // Processing options (quality improvement, coarsening, smoothing) go here.
+  // Quality improvement, coarsening (one round per T0), smoothing: processing/process_surface.hpp.
+  ProcessingOptions processing;
+  // Sphere list (docs/formats.md) added to processing.keep_spheres; empty for none.
+  std::string keep_spheres_file;
 };
 
 struct StageRecord {
@@ -39,6 +44,8 @@ struct SurfacePipelineResult {
   SurfaceMesh raw;      // marching cubes output (after cavity removal)
   SurfaceMesh surface;  // final surface (== raw when options.raw)
   std::vector<StageRecord> stages;
+  // Distance of the final surface's vertices to the raw one (zero when raw).
+  Dislocation dislocation;
   std::array<int, 3> grid_dims{0, 0, 0};  // the blurred volume's size (0 for volume input)
   Grid volume;  // the blurred volume, only with options.keep_volume (atoms input)
 };
