@@ -187,8 +187,11 @@ void HalfedgeMesh::replace_faces(std::span<const int> faces, std::span<const Tri
     int tail, head, outer;
     bool used;
   };
-  std::vector<Boundary> boundary;
-  std::vector<int> old_vertices;
+  // Reused per thread: hundreds of thousands of edits must not each allocate.
+  static thread_local std::vector<Boundary> boundary;
+  static thread_local std::vector<int> old_vertices;
+  boundary.clear();
+  old_vertices.clear();
   for (int f : faces) {
     for (int i = 0; i < 3; ++i) {
       const int h = 3 * f + i;
@@ -205,7 +208,8 @@ void HalfedgeMesh::replace_faces(std::span<const int> faces, std::span<const Tri
   // Each new halfedge is either inner (its reverse is also new) or matches exactly one old
   // boundary halfedge; anything else would open or pinch the surface.
   const std::size_t nh = 3 * triangles.size();
-  std::vector<int> partner(nh, kInvalid);  // inner: index of reverse; boundary: -2 - index
+  static thread_local std::vector<int> partner;  // inner: index of reverse; boundary: -2 - i
+  partner.assign(nh, kInvalid);
   auto new_tail = [&](std::size_t k) { return triangles[k / 3][k % 3]; };
   auto new_head = [&](std::size_t k) { return triangles[k / 3][(k % 3 + 1) % 3]; };
   for (std::size_t k = 0; k < nh; ++k) {
@@ -256,7 +260,8 @@ void HalfedgeMesh::replace_faces(std::span<const int> faces, std::span<const Tri
 
   // Predict every star: count faces per vertex after the edit, and check that kept inner
   // vertices and boundary vertices keep at least 3 neighbours.
-  std::vector<int> faces_after(old_vertices.size(), 0);
+  static thread_local std::vector<int> faces_after;
+  faces_after.assign(old_vertices.size(), 0);
   for (std::size_t i = 0; i < old_vertices.size(); ++i) {
     const int v = old_vertices[i];
     int count = valence(v);  // faces around v before
@@ -277,19 +282,23 @@ void HalfedgeMesh::replace_faces(std::span<const int> faces, std::span<const Tri
 
   // Snapshot for rollback in case a star turns out pinched (several fans).
   const int old_capacity = face_capacity();
-  std::vector<int> saved_heads, saved_twins;
+  static thread_local std::vector<int> saved_heads, saved_twins;
+  saved_heads.clear();
+  saved_twins.clear();
   for (int f : faces) {
     for (int c = 0; c < 3; ++c) {
       saved_heads.push_back(head_[3 * f + c]);
       saved_twins.push_back(twin_[3 * f + c]);
     }
   }
-  std::vector<int> saved_out;
+  static thread_local std::vector<int> saved_out;
+  saved_out.clear();
   for (int v : old_vertices) saved_out.push_back(out_[v]);
   const int saved_marker = face_markers_.empty() ? 0 : face_markers_[faces.empty() ? 0 : faces[0]];
 
   // Slots: reuse the old faces' slots, append if more triangles than before.
-  std::vector<int> slots(triangles.size());
+  static thread_local std::vector<int> slots;
+  slots.assign(triangles.size(), 0);
   for (std::size_t t = 0; t < triangles.size(); ++t) {
     if (t < faces.size()) {
       slots[t] = faces[t];
@@ -394,7 +403,7 @@ void HalfedgeMesh::remove_vertex(int v, std::span<const Triangle> triangles) {
       throw Error("remove_vertex: the hole triangulation still uses " + vertex_text(v));
     }
   }
-  std::vector<int> fan;
+  static thread_local std::vector<int> fan;
   incident_faces(v, fan);
   if (triangles.size() + 2 != fan.size()) {
     throw Error("remove_vertex: a hole of " + std::to_string(fan.size()) + " edges needs " +
