@@ -148,7 +148,8 @@ TEST(HierarchyHdf5, ForeignFilesAreInputErrors) {
   std::ofstream(dir / "text.h5") << "not hdf5\n";
   EXPECT_THROW(read_hierarchy(dir / "text.h5"), InputError);
   EXPECT_THROW(read_hierarchy(dir / "missing.h5"), InputError);
-  const auto make = "/usr/bin/python3 -c \"import h5py; f = h5py.File('" + (dir / "other.h5").string() +
+  const auto make = "/usr/bin/python3 -c \"import h5py; f = h5py.File('" +
+                    (dir / "other.h5").string() +
                     "', 'w'); f['x'] = [1, 2]; f.attrs['format'] = 'something-else'\"";
   ASSERT_EQ(std::system(make.c_str()), 0);
   try {
@@ -159,8 +160,8 @@ TEST(HierarchyHdf5, ForeignFilesAreInputErrors) {
   }
   // A hierarchy with a dataset removed is reported as damaged, not crashed on.
   write_hierarchy(dir / "h.h5", synthetic_hierarchy());
-  const auto damage = "/usr/bin/python3 -c \"import h5py; f = h5py.File('" + (dir / "h.h5").string() +
-                      "', 'r+'); del f['levels/1/volume/tetrahedra']\"";
+  const auto damage = "/usr/bin/python3 -c \"import h5py; f = h5py.File('" +
+                      (dir / "h.h5").string() + "', 'r+'); del f['levels/1/volume/tetrahedra']\"";
   ASSERT_EQ(std::system(damage.c_str()), 0);
   EXPECT_THROW(read_hierarchy(dir / "h.h5"), InputError);
 }
