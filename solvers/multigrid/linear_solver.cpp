@@ -11,12 +11,28 @@ SolveReport solve_reduced(const ReducedSystem& system, std::span<const SparseMat
   Preconditioner preconditioner;
   std::vector<int> sizes;
   std::string name;
+  std::shared_ptr<MultigridPreconditioner> mg;
   if (options.preconditioning == Preconditioning::kMultigrid) {
-    auto mg = std::make_shared<MultigridPreconditioner>(system.matrix, system.free_to_full,
-                                                        prolongations, options.multigrid);
+    mg = std::make_shared<MultigridPreconditioner>(system.matrix, system.free_to_full,
+                                                   prolongations, options.multigrid);
     sizes = mg->level_sizes();
+    // Without a usable coarse level the "V-cycle" is a sparse direct solve of the whole
+    // system, which is only sensible for small systems.
+    if (sizes.size() < 2 && system.matrix.rows() > options.direct_solve_limit) {
+      mg.reset();
+      sizes.clear();
+    }
+  }
+  if (mg) {
     preconditioner = [mg](const Eigen::VectorXd& r, Eigen::VectorXd& z) { mg->apply(r, z); };
-    name = "multigrid V-cycle (symmetric Gauss-Seidel, Galerkin coarse operators)";
+    name = sizes.size() < 2 ? "direct (sparse LDLT; no coarse level)"
+                            : std::string(
+                                  "multigrid V-cycle (symmetric Gauss-Seidel, Galerkin coarse "
+                                  "operators") +
+                                  (mg->coarsest_was_shifted() ? ", shifted coarsest)" : ")");
+  } else if (options.preconditioning == Preconditioning::kMultigrid) {
+    preconditioner = make_incomplete_cholesky(system.matrix);
+    name = "incomplete Cholesky (fallback: the hierarchy has no level coarse enough)";
   } else {
     preconditioner = make_incomplete_cholesky(system.matrix);
     name = "incomplete Cholesky";

@@ -45,6 +45,7 @@ struct MultigridPreconditioner::Impl {
   std::vector<Level> levels;
   Eigen::SimplicialLDLT<ColMajor> coarse_solver;
   MultigridOptions options;
+  bool coarse_shifted = false;
 
   void vcycle(std::size_t l, const Eigen::VectorXd& b, Eigen::VectorXd& x) const {
     if (l + 1 == levels.size()) {
@@ -80,8 +81,15 @@ MultigridPreconditioner::MultigridPreconditioner(const SparseMatrix& a,
   impl_->levels.push_back(std::move(fine));
   // rows_kept[i] = vertex (of the current coarse mesh) behind unknown i on that level.
   std::vector<int> rows_kept(fine_free_to_full.begin(), fine_free_to_full.end());
+  // A hierarchy level that is barely smaller than the current one would cost as much as
+  // the current level and help little; it is skipped by composing its prolongation with
+  // the next one.
+  SparseMatrix pending;
+  bool has_pending = false;
   for (std::size_t l = 0; l < prolongations.size(); ++l) {
-    const SparseMatrix& full = prolongations[l];
+    const SparseMatrix full =
+        has_pending ? SparseMatrix(pending * prolongations[l]) : prolongations[l];
+    has_pending = false;
     for (int v : rows_kept) {
       if (v < 0 || v >= full.rows()) {
         throw Error("multigrid: prolongation " + std::to_string(l) + " has " +
@@ -106,6 +114,16 @@ MultigridPreconditioner::MultigridPreconditioner(const SparseMatrix& a,
       }
     }
     if (coarse_kept.empty()) break;
+    const double ratio =
+        static_cast<double>(coarse_kept.size()) / static_cast<double>(rows_kept.size());
+    if (ratio > options.max_coarse_ratio) {
+      if (l + 1 < prolongations.size()) {
+        pending = full;
+        has_pending = true;
+        continue;
+      }
+      if (ratio > options.max_last_coarse_ratio) break;
+    }
     std::vector<Eigen::Triplet<double, int>> triplets;
     for (std::size_t i = 0; i < rows_kept.size(); ++i) {
       for (SparseMatrix::InnerIterator it(full, rows_kept[i]); it; ++it) {
@@ -131,7 +149,20 @@ MultigridPreconditioner::MultigridPreconditioner(const SparseMatrix& a,
       throw Error("multigrid: a level's operator has a zero diagonal entry");
     }
   }
-  impl_->coarse_solver.compute(ColMajor(impl_->levels.back().a));
+  const ColMajor coarsest(impl_->levels.back().a);
+  impl_->coarse_solver.compute(coarsest);
+  if (impl_->coarse_solver.info() != Eigen::Success && impl_->levels.size() > 1) {
+    // Non-nested hierarchies can give linearly dependent coarse basis functions (after the
+    // Dirichlet rows are dropped), so P^T A P is only semidefinite. Its null vectors z have
+    // P z = 0 (A is definite), so a small diagonal shift changes nothing that is
+    // prolongated back, and the shifted operator factorises.
+    ColMajor shifted = coarsest;
+    for (Eigen::Index i = 0; i < shifted.rows(); ++i) {
+      shifted.coeffRef(i, i) *= 1.0 + options.coarse_shift;
+    }
+    impl_->coarse_solver.compute(shifted);
+    impl_->coarse_shifted = true;
+  }
   if (impl_->coarse_solver.info() != Eigen::Success) {
     throw Error("multigrid: the coarsest operator could not be factorised");
   }
@@ -145,6 +176,8 @@ MultigridPreconditioner& MultigridPreconditioner::operator=(MultigridPreconditio
 void MultigridPreconditioner::apply(const Eigen::VectorXd& r, Eigen::VectorXd& z) const {
   impl_->vcycle(0, r, z);
 }
+
+bool MultigridPreconditioner::coarsest_was_shifted() const { return impl_->coarse_shifted; }
 
 std::vector<int> MultigridPreconditioner::level_sizes() const {
   std::vector<int> sizes;

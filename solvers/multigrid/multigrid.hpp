@@ -25,6 +25,13 @@ struct MultigridOptions {
   int smoothing_sweeps = 2;  // Gauss-Seidel sweeps before and after the coarse correction
   // A coarse column whose largest remaining weight is below this is dropped (see above).
   double drop_column_below = 1e-6;
+  // A hierarchy level with more than this fraction of the current level's unknowns is
+  // skipped (its prolongation is composed with the next one); the last level is used if
+  // it has at most max_last_coarse_ratio of them.
+  double max_coarse_ratio = 0.6;
+  double max_last_coarse_ratio = 0.9;
+  // Relative diagonal shift applied to the coarsest operator only if it is singular.
+  double coarse_shift = 1e-8;
 };
 
 class MultigridPreconditioner {
@@ -43,6 +50,8 @@ class MultigridPreconditioner {
   void apply(const Eigen::VectorXd& r, Eigen::VectorXd& z) const;
 
   std::vector<int> level_sizes() const;
+  // True when the coarsest Galerkin operator was singular and got coarse_shift.
+  bool coarsest_was_shifted() const;
 
  private:
   struct Impl;
