@@ -28,17 +28,17 @@ fs::path scratch() {
   return dir;
 }
 
-struct Run {
+struct CliRun {
   int code = -1;
   std::string err;
 };
 
-Run molmesh(const std::string& args) {
+CliRun molmesh(const std::string& args) {
   const fs::path err = scratch() / "stderr.txt";
   const std::string cmd =
       std::string(MOLMESH_CLI_PATH) + " --quiet " + args + " 2> " + err.string();
   const int status = std::system(cmd.c_str());
-  Run r;
+  CliRun r;
   r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   std::ifstream in(err);
   std::stringstream ss;
@@ -63,7 +63,7 @@ TEST(ImproveCli, StlSoupComesOutClosedManifoldAndBetter) {
   const fs::path out = scratch() / "1a1p_improved.ply";
   const fs::path stats = scratch() / "1a1p_improved.json";
   write_surface_mesh(in, raw_1a1p());
-  const Run r =
+  const CliRun r =
       molmesh("improve " + in.string() + " -o " + out.string() + " --stats " + stats.string());
   ASSERT_EQ(r.code, 0) << r.err;
   const nlohmann::json j = read_json(stats);
@@ -89,8 +89,8 @@ TEST(ImproveCli, MsmsPairInvertedInputIsTurnedOutward) {
   write_msms(stem, inverted);
   const fs::path out = scratch() / "1a1p_msms_improved.off";
   const fs::path stats = scratch() / "1a1p_msms_improved.json";
-  const Run r = molmesh("improve " + stem.string() + ".vert -o " + out.string() +
-                        " --no-coarsen --stats " + stats.string());
+  const CliRun r = molmesh("improve " + stem.string() + ".vert -o " + out.string() +
+                           " --no-coarsen --stats " + stats.string());
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.err.find("components turned outward"), std::string::npos) << r.err;
   const nlohmann::json j = read_json(stats);
@@ -107,7 +107,7 @@ TEST(ImproveCli, OpenMeshIsRefusedWithCountsAndLocations) {
   write_surface_mesh(in, open);
   const fs::path out = scratch() / "open_improved.off";
   fs::remove(out);
-  const Run r = molmesh("improve " + in.string() + " -o " + out.string());
+  const CliRun r = molmesh("improve " + in.string() + " -o " + out.string());
   EXPECT_EQ(r.code, 1) << r.err;
   EXPECT_NE(r.err.find("2 holes (6 edges used by only one triangle), e.g. at ("), std::string::npos)
       << r.err;
@@ -117,7 +117,7 @@ TEST(ImproveCli, OpenMeshIsRefusedWithCountsAndLocations) {
 TEST(ImproveCli, UnknownFormatIsAnInputError) {
   const fs::path in = scratch() / "mesh.xyz";
   std::ofstream(in) << "1 2 3\n";
-  const Run r = molmesh("improve " + in.string() + " -o " + (scratch() / "x.off").string());
+  const CliRun r = molmesh("improve " + in.string() + " -o " + (scratch() / "x.off").string());
   EXPECT_EQ(r.code, 3) << r.err;
 }
 
