@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <regex>
 #include <sstream>
 #include <string>
@@ -78,6 +79,8 @@ TEST(ApbsBorn, FullMeshGivesBornEnergyWithin3Percent) {
   const double dg = std::stod(match[1].str());
   const double analytic = -(1389.35458 / 6.0) * (1.0 - 1.0 / 78.54);  // -228.61 kJ/mol
   RecordProperty("born_energy_kj_mol", std::to_string(dg));
+  std::cout << "APBS Born ion: " << mesh.points.size() << " vertices, " << mesh.tetrahedra.size()
+            << " tets; dG = " << dg << " kJ/mol (analytic " << analytic << ")\n";
   EXPECT_NEAR(dg, analytic, 0.03 * std::abs(analytic)) << "APBS gave " << dg << " kJ/mol";
   fs::remove_all(dir);
 }
