@@ -15,10 +15,13 @@ cp "$ROOT/tests/data/mache.pqr" "$OUT/mache.pqr"
 "$MOLMESH" hierarchy "$OUT/mache.pqr" -o "$OUT/mache.h5" --domain exterior --outer-radius 150 \
   --active-site "$HERE/mache-gorge.spheres" --max-radius-edge 1.5 --t0 0.1,0.3,0.5
 (cd "$OUT" && apbs "$HERE/mache-apbs.in" > apbs.log)
+# Debian's apbs names the file mache-potential-PE0.dx (one file per processor).
+POT="$OUT/mache-potential.dx"
+[ -f "$POT" ] || POT="$OUT/mache-potential-PE0.dx"
 "$MOLMESH" solve smoluchowski "$OUT/mache.h5" --absorbing active-site --diffusion 1e-5 \
   --json "$OUT/rate-no-potential.json"
 "$MOLMESH" solve smoluchowski "$OUT/mache.h5" --absorbing active-site --diffusion 1e-5 \
-  --potential "$OUT/mache-potential.dx" --charge 1 --json "$OUT/rate-potential.json"
+  --potential "$POT" --charge 1 --json "$OUT/rate-potential.json"
 if /usr/bin/python3 -c "import matplotlib" 2>/dev/null; then
   /usr/bin/python3 "$HERE/plot_concentration.py" "$OUT/mache.h5" "$OUT/mache-concentration.png"
 fi
