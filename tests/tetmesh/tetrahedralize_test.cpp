@@ -242,13 +242,17 @@ TEST(Tetrahedralize, VolumeBoundAndExpertSwitches) {
   const TetMesh fine = tetrahedralize(ion, {}, o, {}, &r);
   EXPECT_NE(r.tetgen_switches.find("a0.05"), std::string::npos);
   EXPECT_GT(fine.tetrahedra.size(), coarse.tetrahedra.size());
-  // With Y, tets resting on the preserved surface may stay above the bound; the rest obey.
+  // With Y, tets touching the preserved surface may stay above the bound; the rest obey (TetGen's
+  // final smoothing may push a few slightly over).
   std::size_t over = 0;
-  for (const auto& t : fine.tetrahedra)
-    if (tet_volume(fine.points[t[0]], fine.points[t[1]], fine.points[t[2]], fine.points[t[3]]) >
-        0.05 * (1 + 1e-9))
+  for (const auto& t : fine.tetrahedra) {
+    bool touches_surface = false;
+    for (int v : t) touches_surface = touches_surface || fine.vertex_markers[v] != kNoMarker;
+    if (!touches_surface && tet_volume(fine.points[t[0]], fine.points[t[1]], fine.points[t[2]],
+                                       fine.points[t[3]]) > 0.05 * (1 + 1e-9))
       ++over;
-  EXPECT_LT(over, fine.tetrahedra.size() / 10) << over << " of " << fine.tetrahedra.size();
+  }
+  EXPECT_LE(over, fine.tetrahedra.size() / 100) << over << " of " << fine.tetrahedra.size();
   EXPECT_EQ(r.surface_steiner_points, 0u);
 
   o = {};

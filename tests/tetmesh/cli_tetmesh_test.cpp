@@ -1,0 +1,63 @@
+// `molmesh tetmesh` end to end on a surface file: outputs in every format, --stats JSON,
+// and a bad output name rejected with exit code 1 before any work.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "molmesh/io/mcsf.hpp"
+#include "molmesh/io/surface_mesh_io.hpp"
+#include "molmesh/tetmesh/outer_sphere.hpp"
+
+namespace molmesh {
+namespace {
+
+namespace fs = std::filesystem;
+
+int run(const std::string& args) {
+  const std::string cmd =
+      std::string("'") + MOLMESH_CLI_PATH + "' -q " + args + " > /dev/null 2>&1";
+  const int status = std::system(cmd.c_str());
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+TEST(CliTetmesh, SurfaceFileToEveryFormatWithStats) {
+  const fs::path dir = fs::temp_directory_path() / "molmesh_cli_tetmesh";
+  fs::create_directories(dir);
+  const std::string surf = (dir / "ion.off").string();
+  write_surface_mesh(surf, icosphere(Vec3(1, 1, 1), 3.0, 2));
+  { std::ofstream(dir / "site.txt") << "1 1 4 1.6\n"; }
+  for (const char* ext : {".m", ".vtu", ".msh", ".msh4"}) {
+    const std::string out = (dir / (std::string("ion") + ext)).string();
+    ASSERT_EQ(run("tetmesh " + surf + " --domain exterior --outer-radius 15 --active-site " +
+                  (dir / "site.txt").string() + " -o " + out + " --stats " +
+                  (dir / "stats.json").string()),
+              0)
+        << ext;
+    EXPECT_GT(fs::file_size(out), 1000u);
+  }
+  std::ifstream in(dir / "stats.json");
+  const auto j = nlohmann::json::parse(in);
+  EXPECT_EQ(j["domain"], "exterior");
+  EXPECT_GT(j["tetrahedra"].get<int>(), 100);
+  EXPECT_GT(j["min_volume"].get<double>(), 0.0);
+  EXPECT_EQ(j["tetgen"]["surface_steiner_points"], 0);
+  EXPECT_EQ(j["tetgen"]["outer_radius"], 15.0);
+  EXPECT_GT(j["faces_per_marker"]["3"].get<int>(), 0);
+  EXPECT_EQ(j["tetrahedra_per_region"].size(), 1u);
+  const TetMesh back = read_mcsf(dir / "ion.m");
+  EXPECT_EQ(back.tetrahedra.size(), j["tetrahedra"].get<std::size_t>());
+
+  EXPECT_EQ(run("tetmesh " + surf + " --outer-radius 15 -o " + (dir / "x.xyz").string()), 1);
+  EXPECT_FALSE(fs::exists(dir / "x.xyz"));
+  EXPECT_EQ(run("tetmesh " + surf + " --domain inside -o " + (dir / "x.m").string()), 2);
+  // A single surface with no atoms but ratio sizing works; an enclosed-too-small sphere fails.
+  EXPECT_EQ(run("tetmesh " + surf + " --outer-radius 2 -o " + (dir / "y.m").string()), 1);
+  fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace molmesh
