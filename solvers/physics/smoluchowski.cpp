@@ -74,6 +74,44 @@ SmoluchowskiResult solve_smoluchowski(const TetMesh& mesh, std::span<const doubl
       ++result.bulk_vertices;
     }
   }
+  // Solvent pockets that touch neither the bulk nor an absorbing face (closed cavities)
+  // would make the system singular; nothing diffuses into them, so they are left out
+  // (c = 0 there) and counted.
+  {
+    std::vector<int> parent(nv);
+    for (std::size_t v = 0; v < nv; ++v) parent[v] = static_cast<int>(v);
+    auto find = [&](int v) {
+      while (parent[static_cast<std::size_t>(v)] != v) {
+        parent[static_cast<std::size_t>(v)] =
+            parent[static_cast<std::size_t>(parent[static_cast<std::size_t>(v)])];
+        v = parent[static_cast<std::size_t>(v)];
+      }
+      return v;
+    };
+    for (std::size_t t = 0; t < mesh.tetrahedra.size(); ++t) {
+      if (coefficient[t] == 0.0) continue;
+      const int root = find(mesh.tetrahedra[t][0]);
+      for (std::size_t a = 1; a < 4; ++a)
+        parent[static_cast<std::size_t>(find(mesh.tetrahedra[t][a]))] = root;
+    }
+    std::vector<char> anchored(nv, 0);
+    for (std::size_t v = 0; v < nv; ++v) {
+      if (in_solvent[v] && dirichlet[v])
+        anchored[static_cast<std::size_t>(find(static_cast<int>(v)))] = 1;
+    }
+    for (std::size_t v = 0; v < nv; ++v) {
+      if (in_solvent[v] && !anchored[static_cast<std::size_t>(find(static_cast<int>(v)))]) {
+        in_solvent[v] = 0;
+        dirichlet[v] = 1;
+        ++result.isolated_vertices;
+      }
+    }
+  }
+  if (result.isolated_vertices > 0) {
+    reporter.warn("Smoluchowski: " + std::to_string(result.isolated_vertices) +
+                  " solvent vertices lie in closed cavities (no bulk or absorbing boundary); "
+                  "they are left out with c = 0");
+  }
   if (result.absorbing_vertices == 0) {
     throw Error(
         "Smoluchowski: no solvent vertex lies on an absorbing boundary face (is the "

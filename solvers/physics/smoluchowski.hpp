@@ -42,6 +42,7 @@ struct SmoluchowskiResult {
   int absorbing_vertices = 0;
   int bulk_vertices = 0;
   int unknowns = 0;
+  int isolated_vertices = 0;  // in closed solvent cavities: left out, c = 0
   SolveReport solve;
 };
 

@@ -189,6 +189,7 @@ void run_smoluchowski(const SmoluchowskiArgs& args, const CliContext& ctx) {
   j["absorbing"] = args.absorbing;
   j["absorbing_vertices"] = result.absorbing_vertices;
   j["bulk_vertices"] = result.bulk_vertices;
+  j["isolated_cavity_vertices"] = result.isolated_vertices;
   j["diffusion_cm2_per_s"] = args.diffusion;
   j["potential"] = args.potential.empty() ? nlohmann::json() : nlohmann::json(args.potential);
   j["charge"] = args.charge;
