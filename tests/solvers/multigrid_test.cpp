@@ -1,0 +1,64 @@
+// Multigrid-preconditioned CG: iteration counts independent of the number of levels and of
+// the mesh size, unlike CG with incomplete Cholesky.
+#include <gtest/gtest.h>
+
+#include "shell_mesh.hpp"
+#include "solvers/physics/smoluchowski.hpp"
+
+namespace molmesh::solvers {
+namespace {
+
+SmoluchowskiResult solve(const test::ShellHierarchy& h, Preconditioning p) {
+  SmoluchowskiOptions options;
+  options.solver.preconditioning = p;
+  options.solver.cg.tolerance = 1e-8;
+  return solve_smoluchowski(h.meshes[0].mesh, {}, h.prolongations, options);
+}
+
+TEST(Multigrid, IterationsStayLowForTwoToFiveLevels) {
+  const test::ShellSpec finest{
+      .inner_radius = 10.0, .outer_radius = 100.0, .subdivisions = 4, .radial_layers = 16};
+  for (int levels = 2; levels <= 5; ++levels) {
+    const auto h = test::make_shell_hierarchy(finest, levels);
+    const auto result = solve(h, Preconditioning::kMultigrid);
+    std::printf("levels %d: sizes", levels);
+    for (int s : result.solve.level_sizes) std::printf(" %d", s);
+    std::printf("; %d iterations, relative residual %.2e, %.3f s setup + %.3f s solve\n",
+                result.solve.iterations, result.solve.relative_residual, result.solve.setup_time_s,
+                result.solve.solve_time_s);
+    EXPECT_EQ(static_cast<int>(result.solve.level_sizes.size()), levels);
+    EXPECT_TRUE(result.solve.converged);
+    EXPECT_LE(result.solve.relative_residual, 1e-8 * 1.0001);
+    EXPECT_LE(result.solve.iterations, 25);
+    // The residual history is recorded and decreasing overall.
+    EXPECT_EQ(result.solve.residual_history.size(),
+              static_cast<std::size_t>(result.solve.iterations + 1));
+  }
+}
+
+TEST(Multigrid, IncompleteCholeskyNeedsMoreIterationsOnFinerMeshes) {
+  int previous_ic = 0;
+  for (int refinement = 2; refinement <= 4; ++refinement) {
+    const auto h = test::make_shell_hierarchy({.inner_radius = 10.0,
+                                               .outer_radius = 100.0,
+                                               .subdivisions = refinement,
+                                               .radial_layers = 1 << refinement},
+                                              refinement + 1);
+    const auto mg = solve(h, Preconditioning::kMultigrid);
+    const auto ic = solve(h, Preconditioning::kIncompleteCholesky);
+    std::printf("%d unknowns: MG-PCG %d iterations (%.3f s), IC-PCG %d iterations (%.3f s)\n",
+                mg.unknowns, mg.solve.iterations, mg.solve.setup_time_s + mg.solve.solve_time_s,
+                ic.solve.iterations, ic.solve.setup_time_s + ic.solve.solve_time_s);
+    EXPECT_TRUE(mg.solve.converged);
+    EXPECT_TRUE(ic.solve.converged);
+    EXPECT_LE(mg.solve.iterations, 25);
+    EXPECT_GT(ic.solve.iterations, previous_ic);
+    EXPECT_GT(ic.solve.iterations, mg.solve.iterations);
+    // Same answer either way.
+    EXPECT_NEAR(mg.rate_constant_A3_per_s / ic.rate_constant_A3_per_s, 1.0, 1e-6);
+    previous_ic = ic.solve.iterations;
+  }
+}
+
+}  // namespace
+}  // namespace molmesh::solvers
