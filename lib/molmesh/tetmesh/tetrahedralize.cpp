@@ -218,9 +218,10 @@ TetMesh tetrahedralize(const SurfaceMesh& surface, const Atoms& atoms,
     in.facetmarkerlist[f] = marker;
   }
 
-  // Atom centres become nodes of the molecule's part: TetGen inserts them (-i) after the
-  // boundary is recovered. Duplicates would be rejected by TetGen, so merge them first.
-  tetgenio addin;
+  // Atom centres become nodes of the molecule's part. They go into the PLC as isolated
+  // vertices, which TetGen puts into its initial Delaunay tetrahedralisation. (Inserting
+  // them afterwards with -i crashes TetGen 1.5 in insertconstrainedpoints on mAChE.)
+  // Duplicates would be rejected by TetGen, so merge them first.
   std::vector<Vec3> atom_nodes;
   if (want_interior && !atoms.empty()) {
     std::unordered_set<std::array<std::uint64_t, 3>, PointKeyHash> seen;
@@ -234,11 +235,14 @@ TetMesh tetrahedralize(const SurfaceMesh& surface, const Atoms& atoms,
       }
       atom_nodes.push_back(a.center);
     }
-    addin.firstnumber = 0;
-    addin.numberofpoints = static_cast<int>(atom_nodes.size());
-    addin.pointlist = new REAL[atom_nodes.size() * 3];
+    const std::size_t n_all = static_cast<std::size_t>(n_in) + atom_nodes.size();
+    auto* all_points = new REAL[n_all * 3];
+    std::copy(in.pointlist, in.pointlist + static_cast<std::size_t>(n_in) * 3, all_points);
     for (std::size_t i = 0; i < atom_nodes.size(); ++i)
-      for (int d = 0; d < 3; ++d) addin.pointlist[3 * i + d] = atom_nodes[i][d];
+      for (int d = 0; d < 3; ++d) all_points[3 * (n_in + i) + d] = atom_nodes[i][d];
+    delete[] in.pointlist;
+    in.pointlist = all_points;
+    in.numberofpoints = static_cast<int>(n_all);
   }
 
   // p: PLC; Y: no Steiner points on the given facets; M: keep coplanar neighbours as
@@ -263,7 +267,6 @@ TetMesh tetrahedralize(const SurfaceMesh& surface, const Atoms& atoms,
   }
   for (char c : std::string("znQ"))
     if (switches.find(c) == std::string::npos) switches += c;
-  if (!atom_nodes.empty() && switches.find('i') == std::string::npos) switches += 'i';
   report.tetgen_switches = switches;
 
   tetgenbehavior behavior;
@@ -273,7 +276,7 @@ TetMesh tetrahedralize(const SurfaceMesh& surface, const Atoms& atoms,
   tetgenio out;
   const auto t_tetgen = Clock::now();
   try {
-    ::tetrahedralize(&behavior, &in, &out, atom_nodes.empty() ? nullptr : &addin, nullptr);
+    ::tetrahedralize(&behavior, &in, &out, nullptr, nullptr);
   } catch (int code) {
     throw Error("tetrahedral meshing failed: " + tetgen_error_message(code));
   }
