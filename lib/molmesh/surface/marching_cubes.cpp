@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <memory>
 #include <mutex>
 
 #include "molmesh/core/error.hpp"
@@ -209,7 +210,9 @@ SurfaceMesh marching_cubes(const Grid& grid, double isovalue, const Reporter& re
         "one cell beyond the grid");
 
   // Pass 1: one vertex per crossed grid edge, numbered by (plane, row, sample, axis).
-  std::vector<std::int32_t> edge_vertex(3 * plane_size * R, -1);
+  // Left uninitialised: only entries of crossed edges are written and read, so the pages
+  // of empty space are never touched.
+  const auto edge_vertex = std::make_unique_for_overwrite<std::int32_t[]>(3 * plane_size * R);
   std::vector<std::size_t> plane_count(static_cast<std::size_t>(R) + 1, 0);
   auto crossing = [&](std::size_t s, int axis, int i, int j, int k) {
     const int upper[3] = {i + (axis == 0), j + (axis == 1), k + (axis == 2)};
@@ -288,7 +291,8 @@ SurfaceMesh marching_cubes(const Grid& grid, double isovalue, const Reporter& re
             const int c = kEdge[e][0];
             const std::size_t s =
                 field.index(i + kCorner[c][0], j + kCorner[c][1], k + kCorner[c][2]);
-            vertex_of_edge[e] = edge_vertex[3 * s + e / 4];
+            const bool crossed = ((mask >> kEdge[e][0]) & 1) != ((mask >> kEdge[e][1]) & 1);
+            vertex_of_edge[e] = crossed ? edge_vertex[3 * s + e / 4] : -1;
           }
           int next_edge[12];
           for (int& e : next_edge) e = -1;
