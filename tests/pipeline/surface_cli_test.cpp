@@ -58,9 +58,8 @@ TEST(SurfaceCli, WritesMeshAndStatsJson) {
                                           "timings_s",
                                           "input",
                                           "parameters"};
-  std::set<std::string> keys;
-  for (const auto& item : doc.items()) keys.insert(item.key());
-  EXPECT_EQ(keys, required);
+  // The keys must all be there; processing adds dislocation and per-stage stats.
+  for (const auto& key : required) EXPECT_TRUE(doc.contains(key)) << key;
   EXPECT_TRUE(doc["closed"].get<bool>());
   EXPECT_TRUE(doc["manifold"].get<bool>());
   EXPECT_GT(doc["volume"].get<double>(), 0.0);

@@ -49,7 +49,9 @@ TEST(SurfacePipeline, VolumeInputSkipsBlur) {
   Atom a;
   a.radius = 1.5;
   const Grid grid = blur_atoms({a}, {});
-  const SurfacePipelineResult r = surface_from_grid(grid, {});
+  SurfacePipelineOptions raw_only;
+  raw_only.raw = true;
+  const SurfacePipelineResult r = surface_from_grid(grid, raw_only);
   ASSERT_EQ(r.stages.size(), 1u);
   EXPECT_EQ(r.stages[0].name, "marching cubes");
   EXPECT_EQ(r.stages[0].stats->euler_characteristic, 2);
