@@ -218,7 +218,7 @@ const CommandRegistration registration{
           ->type_name("V");
       cmd->add_option("--tetgen-switches", args->tet.tetgen_switches,
                       "Expert: TetGen switches replacing the ones above (e.g. pYq1.5/15); molmesh "
-                      "adds p, z, n, Q and i (atoms) when missing. Without Y TetGen may split "
+                      "adds p, z, n and Q when missing. Without Y TetGen may split "
                       "the molecular surface")
           ->type_name("SW");
       cmd->add_option("--surface-output", args->surface_output,
