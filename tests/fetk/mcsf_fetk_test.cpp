@@ -1,6 +1,7 @@
 // molmesh's MCSF files read by FETK's own MC reader (Gem_read, the code APBS and SMOL use),
 // checking counts, orientation, face types and materials as FETK sees them.
 #include <gtest/gtest.h>
+#include <unistd.h>
 #include <mc/gem.h>
 
 #include <Eigen/Geometry>
@@ -65,7 +66,7 @@ TEST(FetkReader, ReadsMolmeshFullMesh) {
   o.outer_radius = 20.0;
   o.active_site = {Sphere{Vec3(0, 0, 3), 1.6}};  // marks faces but they are interior here
   const TetMesh mesh = tetrahedralize(ion, one_atom(), o);
-  const auto path = std::filesystem::temp_directory_path() / "molmesh_fetk_full.m";
+  const auto path = std::filesystem::temp_directory_path() / ("molmesh_fetk_full_" + std::to_string(::getpid()) + ".m");
   write_mcsf(path, mesh);
   FetkMesh fetk = read_with_fetk(path);
   EXPECT_TRUE(fetk.read_ok);
@@ -93,7 +94,7 @@ TEST(FetkReader, ReadsMolmeshExteriorMeshWithActiveSite) {
   const TetMesh mesh = tetrahedralize(ion, one_atom(), o);
   std::map<int, int> per_marker;
   for (int m : mesh.boundary_face_markers) ++per_marker[m];
-  const auto path = std::filesystem::temp_directory_path() / "molmesh_fetk_exterior.m";
+  const auto path = std::filesystem::temp_directory_path() / ("molmesh_fetk_exterior_" + std::to_string(::getpid()) + ".m");
   write_mcsf(path, mesh);
   FetkMesh fetk = read_with_fetk(path);
   EXPECT_TRUE(fetk.read_ok);

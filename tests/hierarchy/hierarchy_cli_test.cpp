@@ -2,6 +2,7 @@
 // checked through the library reader, the transfer invariants, an independent python
 // reader and `molmesh info`.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cstdlib>
 #include <filesystem>
@@ -22,7 +23,7 @@ namespace fs = std::filesystem;
 class HierarchyCli : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    dir_ = fs::temp_directory_path() / "molmesh_hierarchy_cli";
+    dir_ = fs::temp_directory_path() / ("molmesh_hierarchy_cli_" + std::to_string(::getpid()));
     fs::remove_all(dir_);
     fs::create_directories(dir_);
     input_ = fs::path(MOLMESH_TEST_DATA_DIR) / "fas2.pqr";

@@ -2,6 +2,7 @@
 // floor requirements of the hierarchy (steadily falling level sizes, transfer invariants,
 // a file an independent reader accepts).
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cstdlib>
 #include <filesystem>
@@ -17,7 +18,7 @@ namespace {
 namespace fs = std::filesystem;
 
 TEST(HierarchyMache, FourLevelsExterior) {
-  const auto dir = fs::temp_directory_path() / "molmesh_hierarchy_mache";
+  const auto dir = fs::temp_directory_path() / ("molmesh_hierarchy_mache_" + std::to_string(::getpid()));
   fs::remove_all(dir);
   fs::create_directories(dir);
   const auto h5 = dir / "mache.h5";

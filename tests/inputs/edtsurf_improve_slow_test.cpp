@@ -3,6 +3,7 @@
 // the paper's Fig. 10 numbers: closed and manifold, min angle >= 22°, max <= 130°, >= 88% of
 // angles in [40°, 80°], at least 2x fewer vertices, mean dislocation <= 0.05 Å.
 #include <gtest/gtest.h>
+#include <unistd.h>
 #include <sys/wait.h>
 
 #include <cstdio>
@@ -48,7 +49,7 @@ void write_heavy_atom_pdb(const Atoms& atoms, const fs::path& path) {
 }
 
 TEST(EdtsurfImprove, MacheMeetsThePaperFloors) {
-  const fs::path dir = fs::temp_directory_path() / "molmesh_inputs_edtsurf";
+  const fs::path dir = fs::temp_directory_path() / ("molmesh_inputs_edtsurf_" + std::to_string(::getpid()));
   fs::create_directories(dir);
   write_heavy_atom_pdb(read_atoms(MOLMESH_TEST_DATA_DIR "/mache.pqr"), dir / "mache.pdb");
   ASSERT_EQ(

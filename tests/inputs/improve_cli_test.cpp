@@ -1,6 +1,7 @@
 // `molmesh improve` end to end on a real molecular surface handed over the way other tools
 // write meshes: an STL triangle soup, an MSMS pair, and an open mesh that must be refused.
 #include <gtest/gtest.h>
+#include <unistd.h>
 #include <sys/wait.h>
 
 #include <cstdlib>
@@ -23,7 +24,7 @@ namespace {
 namespace fs = std::filesystem;
 
 fs::path scratch() {
-  const auto dir = fs::temp_directory_path() / "molmesh_inputs_improve_cli";
+  const auto dir = fs::temp_directory_path() / ("molmesh_inputs_improve_cli_" + std::to_string(::getpid()));
   fs::create_directories(dir);
   return dir;
 }

@@ -3,6 +3,7 @@
 #include "molmesh/io/msms.hpp"
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -17,7 +18,7 @@ namespace molmesh {
 namespace {
 
 std::filesystem::path scratch(const std::string& name) {
-  const auto dir = std::filesystem::temp_directory_path() / "molmesh_inputs_msms";
+  const auto dir = std::filesystem::temp_directory_path() / ("molmesh_inputs_msms_" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
   return dir / name;
 }

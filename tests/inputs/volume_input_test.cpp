@@ -2,6 +2,7 @@
 // must contour to the same surface as the atoms path, a hand-made MRC map of a known field
 // must give the known shape, and the surface command must accept both and --blur fast.
 #include <gtest/gtest.h>
+#include <unistd.h>
 #include <sys/wait.h>
 
 #include <cmath>
@@ -29,7 +30,7 @@ namespace {
 namespace fs = std::filesystem;
 
 fs::path scratch() {
-  const auto dir = fs::temp_directory_path() / "molmesh_inputs_volume";
+  const auto dir = fs::temp_directory_path() / ("molmesh_inputs_volume_" + std::to_string(::getpid()));
   fs::create_directories(dir);
   return dir;
 }

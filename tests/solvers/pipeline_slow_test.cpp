@@ -2,6 +2,7 @@
 // (F = 1 exactly at r = R), `molmesh hierarchy` meshes it with TetGen, `molmesh solve`
 // solves on the hierarchy with multigrid.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cstdlib>
 #include <filesystem>
@@ -14,7 +15,7 @@ namespace {
 namespace fs = std::filesystem;
 
 fs::path work_dir() {
-  const fs::path dir = fs::temp_directory_path() / "molmesh_solver_pipeline_test";
+  const fs::path dir = fs::temp_directory_path() / ("molmesh_solver_pipeline_test_" + std::to_string(::getpid()));
   fs::create_directories(dir);
   return dir;
 }

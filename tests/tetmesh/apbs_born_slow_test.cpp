@@ -2,6 +2,7 @@
 // the Poisson-Boltzmann equation on it in finite-element mode (fe-manual, usemesh), and the
 // solvation energy must be within 3 % of Born's analytic value.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cstdlib>
 #include <filesystem>
@@ -42,7 +43,7 @@ TEST(ApbsBorn, FullMeshGivesBornEnergyWithin3Percent) {
   if (std::system("command -v apbs > /dev/null 2>&1") != 0) {
     FAIL() << "apbs is not installed (Debian package apbs)";
   }
-  const fs::path dir = fs::temp_directory_path() / "molmesh_apbs_born";
+  const fs::path dir = fs::temp_directory_path() / ("molmesh_apbs_born_" + std::to_string(::getpid()));
   fs::remove_all(dir);
   fs::create_directories(dir);
 

@@ -1,6 +1,7 @@
 // `molmesh tetmesh` end to end on a surface file: outputs in every format, --stats JSON,
 // and a bad output name rejected with exit code 1 before any work.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cstdlib>
 #include <filesystem>
@@ -25,7 +26,7 @@ int run(const std::string& args) {
 }
 
 TEST(CliTetmesh, SurfaceFileToEveryFormatWithStats) {
-  const fs::path dir = fs::temp_directory_path() / "molmesh_cli_tetmesh";
+  const fs::path dir = fs::temp_directory_path() / ("molmesh_cli_tetmesh_" + std::to_string(::getpid()));
   fs::create_directories(dir);
   const std::string surf = (dir / "ion.off").string();
   write_surface_mesh(surf, icosphere(Vec3(1, 1, 1), 3.0, 2));
