@@ -51,7 +51,10 @@ void BM_CoarsenMacheRaw(benchmark::State& state) { run(state, mache_raw()); }
 void BM_CoarsenMacheImproved(benchmark::State& state) { run(state, mache_improved()); }
 
 BENCHMARK(BM_CoarsenMacheRaw)->Unit(benchmark::kMillisecond)->MinTime(2.0)->MeasureProcessCPUTime();
-BENCHMARK(BM_CoarsenMacheImproved)->Unit(benchmark::kMillisecond)->MinTime(2.0)->MeasureProcessCPUTime();
+BENCHMARK(BM_CoarsenMacheImproved)
+    ->Unit(benchmark::kMillisecond)
+    ->MinTime(2.0)
+    ->MeasureProcessCPUTime();
 
 }  // namespace
 
