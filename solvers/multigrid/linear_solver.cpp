@@ -12,27 +12,22 @@ SolveReport solve_reduced(const ReducedSystem& system, std::span<const SparseMat
   std::vector<int> sizes;
   std::string name;
   std::shared_ptr<MultigridPreconditioner> mg;
+  std::size_t mesh_levels = 0;
+  std::vector<long> nonzeros;
   if (options.preconditioning == Preconditioning::kMultigrid) {
     mg = std::make_shared<MultigridPreconditioner>(system.matrix, system.free_to_full,
                                                    prolongations, options.multigrid);
     sizes = mg->level_sizes();
-    // Without a usable coarse level the "V-cycle" is a sparse direct solve of the whole
-    // system, which is only sensible for small systems.
-    if (sizes.size() < 2 && system.matrix.rows() > options.direct_solve_limit) {
-      mg.reset();
-      sizes.clear();
-    }
-  }
-  if (mg) {
+    mesh_levels = mg->mesh_levels();
+    nonzeros = mg->level_nonzeros();
     preconditioner = [mg](const Eigen::VectorXd& r, Eigen::VectorXd& z) { mg->apply(r, z); };
-    name = sizes.size() < 2 ? "direct (sparse LDLT; no coarse level)"
-                            : std::string(
-                                  "multigrid V-cycle (symmetric Gauss-Seidel, Galerkin coarse "
-                                  "operators") +
-                                  (mg->coarsest_was_shifted() ? ", shifted coarsest)" : ")");
-  } else if (options.preconditioning == Preconditioning::kMultigrid) {
-    preconditioner = make_incomplete_cholesky(system.matrix);
-    name = "incomplete Cholesky (fallback: the hierarchy has no level coarse enough)";
+    if (sizes.size() < 2) {
+      name = "direct (sparse LDLT)";
+    } else {
+      name = "multigrid V-cycle (symmetric Gauss-Seidel, Galerkin coarse operators; " +
+             std::to_string(mesh_levels) + " mesh + " + std::to_string(sizes.size() - mesh_levels) +
+             " aggregation levels" + (mg->coarsest_was_shifted() ? ", shifted coarsest)" : ")");
+    }
   } else {
     preconditioner = make_incomplete_cholesky(system.matrix);
     name = "incomplete Cholesky";
@@ -44,6 +39,8 @@ SolveReport solve_reduced(const ReducedSystem& system, std::span<const SparseMat
   report.setup_time_s = setup;
   report.preconditioner = name;
   report.level_sizes = std::move(sizes);
+  report.mesh_levels = static_cast<int>(mesh_levels);
+  report.level_nonzeros = std::move(nonzeros);
   return report;
 }
 

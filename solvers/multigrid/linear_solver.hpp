@@ -16,14 +16,11 @@ struct LinearSolverOptions {
   Preconditioning preconditioning = Preconditioning::kMultigrid;
   SolveOptions cg;
   MultigridOptions multigrid;
-  // kMultigrid without any usable coarse level: systems larger than this fall back to
-  // incomplete Cholesky (the report's preconditioner says so) instead of a direct solve.
-  Eigen::Index direct_solve_limit = 5000;
 };
 
 // Solves system.matrix * x = system.rhs (x holds the free unknowns on return). With
-// kMultigrid and no prolongations the V-cycle degenerates to a direct solve (small systems)
-// or incomplete Cholesky (large ones).
+// kMultigrid and no prolongations the V-cycle is algebraic multigrid (a direct solve for
+// small systems).
 SolveReport solve_reduced(const ReducedSystem& system, std::span<const SparseMatrix> prolongations,
                           const LinearSolverOptions& options, Eigen::VectorXd& x);
 

@@ -5,7 +5,9 @@
 #include <string>
 
 #include "molmesh/core/error.hpp"
+#include "solvers/multigrid/aggregation.hpp"
 #include "solvers/multigrid/pcg.hpp"
+#include "solvers/multigrid/sparse_product.hpp"
 
 namespace molmesh::solvers {
 
@@ -46,6 +48,7 @@ struct MultigridPreconditioner::Impl {
   Eigen::SimplicialLDLT<ColMajor> coarse_solver;
   MultigridOptions options;
   bool coarse_shifted = false;
+  std::size_t mesh_levels = 0;
 
   void vcycle(std::size_t l, const Eigen::VectorXd& b, Eigen::VectorXd& x) const {
     if (l + 1 == levels.size()) {
@@ -87,8 +90,7 @@ MultigridPreconditioner::MultigridPreconditioner(const SparseMatrix& a,
   SparseMatrix pending;
   bool has_pending = false;
   for (std::size_t l = 0; l < prolongations.size(); ++l) {
-    const SparseMatrix full =
-        has_pending ? SparseMatrix(pending * prolongations[l]) : prolongations[l];
+    const SparseMatrix full = has_pending ? multiply(pending, prolongations[l]) : prolongations[l];
     has_pending = false;
     for (int v : rows_kept) {
       if (v < 0 || v >= full.rows()) {
@@ -137,11 +139,25 @@ MultigridPreconditioner::MultigridPreconditioner(const SparseMatrix& a,
     level.p.setFromTriplets(triplets.begin(), triplets.end());
     level.pt = level.p.transpose();
     Level coarse;
-    const SparseMatrix ap = level.a * level.p;
-    coarse.a = SparseMatrix(level.pt * ap);
+    coarse.a = galerkin_product(level.pt, level.a, level.p);
     coarse.a.makeCompressed();
     impl_->levels.push_back(std::move(coarse));
     rows_kept = std::move(coarse_kept);
+  }
+  impl_->mesh_levels = impl_->levels.size();
+  // Below the mesh hierarchy: algebraic levels until a direct solve is cheap.
+  while (impl_->levels.back().a.rows() > options.max_direct_unknowns) {
+    Level& level = impl_->levels.back();
+    SparseMatrix p = smoothed_aggregation_prolongation(level.a, options.aggregation);
+    if (p.cols() == 0 || static_cast<double>(p.cols()) >
+                             options.max_aggregation_ratio * static_cast<double>(p.rows()))
+      break;
+    level.p = std::move(p);
+    level.pt = level.p.transpose();
+    Level coarse;
+    coarse.a = galerkin_product(level.pt, level.a, level.p);
+    coarse.a.makeCompressed();
+    impl_->levels.push_back(std::move(coarse));
   }
   for (Level& level : impl_->levels) {
     level.inverse_diagonal = level.a.diagonal().cwiseInverse();
@@ -178,6 +194,15 @@ void MultigridPreconditioner::apply(const Eigen::VectorXd& r, Eigen::VectorXd& z
 }
 
 bool MultigridPreconditioner::coarsest_was_shifted() const { return impl_->coarse_shifted; }
+
+std::size_t MultigridPreconditioner::mesh_levels() const { return impl_->mesh_levels; }
+
+std::vector<long> MultigridPreconditioner::level_nonzeros() const {
+  std::vector<long> nonzeros;
+  for (const Level& level : impl_->levels)
+    nonzeros.push_back(static_cast<long>(level.a.nonZeros()));
+  return nonzeros;
+}
 
 std::vector<int> MultigridPreconditioner::level_sizes() const {
   std::vector<int> sizes;

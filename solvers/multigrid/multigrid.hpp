@@ -9,6 +9,10 @@
 // boundary markers are needed, so non-nested hierarchies whose coarse boundaries differ
 // from the fine ones are handled the same way.
 //
+// Below the coarsest mesh level, smoothed-aggregation levels (aggregation.hpp) continue
+// until at most max_direct_unknowns are left; a hierarchy of one level gives plain
+// algebraic multigrid.
+//
 // Smoothing is symmetric Gauss-Seidel (forward before restriction, backward after
 // prolongation), the coarsest level is solved exactly with a sparse LDL^T, so the V-cycle
 // is a symmetric positive definite operator, as CG requires.
@@ -18,6 +22,7 @@
 #include <vector>
 
 #include "molmesh/hierarchy/hierarchy.hpp"
+#include "solvers/multigrid/aggregation.hpp"
 
 namespace molmesh::solvers {
 
@@ -30,6 +35,11 @@ struct MultigridOptions {
   // it has at most max_last_coarse_ratio of them.
   double max_coarse_ratio = 0.6;
   double max_last_coarse_ratio = 0.9;
+  // The coarsest level is solved directly; larger ones get algebraic levels below them.
+  Eigen::Index max_direct_unknowns = 1500;
+  AggregationOptions aggregation;
+  // Aggregation that keeps more than this fraction of the unknowns has stalled: stop.
+  double max_aggregation_ratio = 0.8;
   // Relative diagonal shift applied to the coarsest operator only if it is singular.
   double coarse_shift = 1e-8;
 };
@@ -50,6 +60,11 @@ class MultigridPreconditioner {
   void apply(const Eigen::VectorXd& r, Eigen::VectorXd& z) const;
 
   std::vector<int> level_sizes() const;
+  // Nonzeros of every level's operator (their sum over the first is the operator
+  // complexity, the cost of a cycle relative to one fine-level sweep).
+  std::vector<long> level_nonzeros() const;
+  // How many of level_sizes() come from meshes; the rest are algebraic (aggregation).
+  std::size_t mesh_levels() const;
   // True when the coarsest Galerkin operator was singular and got coarse_shift.
   bool coarsest_was_shifted() const;
 

@@ -24,7 +24,9 @@ struct SolveReport {
   double setup_time_s = 0.0;             // building the preconditioner
   double solve_time_s = 0.0;             // the iterations
   std::string preconditioner;
-  std::vector<int> level_sizes;  // unknowns per multigrid level (empty for IC)
+  std::vector<int> level_sizes;      // unknowns per multigrid level (empty for IC)
+  std::vector<long> level_nonzeros;  // nonzeros of each level's operator
+  int mesh_levels = 0;               // leading level_sizes from meshes; the rest algebraic
 };
 
 // z = M^-1 r for a symmetric positive definite M.

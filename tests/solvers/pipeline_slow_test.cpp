@@ -15,7 +15,8 @@ namespace {
 namespace fs = std::filesystem;
 
 fs::path work_dir() {
-  const fs::path dir = fs::temp_directory_path() / ("molmesh_solver_pipeline_test_" + std::to_string(::getpid()));
+  const fs::path dir =
+      fs::temp_directory_path() / ("molmesh_solver_pipeline_test_" + std::to_string(::getpid()));
   fs::create_directories(dir);
   return dir;
 }

@@ -43,6 +43,7 @@ struct HierarchyArgs {
   double max_radius_edge = 2.0;
   double min_dihedral = 10.0;
   double max_volume = 0.0;
+  double size_factor = 1.0;
   bool no_renumber = false;
 };
 
@@ -91,6 +92,7 @@ void run(const HierarchyArgs& args, const CliContext& ctx) {
   options.tetmesh.max_radius_edge_ratio = args.max_radius_edge;
   options.tetmesh.min_dihedral_deg = args.min_dihedral;
   if (args.max_volume > 0) options.tetmesh.max_volume = args.max_volume;
+  options.tetmesh.size_factor = args.size_factor;
   options.renumber = !args.no_renumber;
 
   HierarchyReport report;
@@ -115,6 +117,7 @@ void run(const HierarchyArgs& args, const CliContext& ctx) {
   p["max_radius_edge_ratio"] = text(args.max_radius_edge);
   p["min_dihedral_deg"] = text(args.min_dihedral);
   p["max_volume"] = args.max_volume > 0 ? text(args.max_volume) : "none";
+  p["size_factor"] = text(args.size_factor);
   p["renumbering"] = args.no_renumber ? "none" : "reverse Cuthill-McKee";
   if (!report.levels.empty()) p["tetgen_switches"] = report.levels.front().tetmesh.tetgen_switches;
   p["molmesh_version"] = "0.1.0";
@@ -208,6 +211,12 @@ const CommandRegistration registration{
           ->capture_default_str();
       cmd->add_option("--max-volume", args->max_volume, "Upper bound on tetrahedron volume (Å³)")
           ->check(CLI::PositiveNumber);
+      cmd->add_option("--size-factor", args->size_factor,
+                      "Size grading (TetGen -m): tetrahedra near the surface and the outer sphere "
+                      "aim at their edge length times this factor, graded in between; smaller: "
+                      "finer near the surface; 0: no grading")
+          ->check(CLI::NonNegativeNumber)
+          ->capture_default_str();
       cmd->add_flag("--no-renumber", args->no_renumber,
                     "Keep TetGen's vertex numbering (default: reverse Cuthill-McKee, permutation "
                     "stored in /levels/<L>/volume/permutation)");

@@ -127,7 +127,9 @@ nlohmann::json report_json(const solvers::SolveReport& r) {
           {"time_s", r.setup_time_s + r.solve_time_s},
           {"preconditioner", r.preconditioner},
           {"levels_used", r.level_sizes.empty() ? 1 : r.level_sizes.size()},
-          {"level_unknowns", r.level_sizes}};
+          {"level_unknowns", r.level_sizes},
+          {"level_nonzeros", r.level_nonzeros},
+          {"mesh_levels_used", r.mesh_levels}};
 }
 
 void write_json(const std::string& path, const nlohmann::json& j) {

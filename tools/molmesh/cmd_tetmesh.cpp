@@ -152,6 +152,7 @@ void run(const TetmeshArgs& args, const CliContext& ctx) {
     parameters["min_dihedral_deg"] = options.min_dihedral_deg;
     if (options.outer_radius) parameters["outer_radius"] = *options.outer_radius;
     if (options.max_volume) parameters["max_volume"] = *options.max_volume;
+    parameters["size_factor"] = options.size_factor;
     parameters["active_site_spheres"] = options.active_site.size();
     doc["parameters"] = parameters;
     write_json_file(args.stats, doc);
@@ -216,6 +217,12 @@ const CommandRegistration registration{
                       "TetGen -a: largest tetrahedron volume in Å^3 (default: unbounded)")
           ->check(CLI::PositiveNumber)
           ->type_name("V");
+      cmd->add_option("--size-factor", args->tet.size_factor,
+                      "Size grading (TetGen -m): tetrahedra near an input vertex aim at its mean "
+                      "edge length times this factor, interpolated between the molecular surface "
+                      "and the outer sphere; smaller: finer near the surface; 0: no grading")
+          ->check(CLI::NonNegativeNumber)
+          ->capture_default_str();
       cmd->add_option("--tetgen-switches", args->tet.tetgen_switches,
                       "Expert: TetGen switches replacing the ones above (e.g. pYq1.5/15); molmesh "
                       "adds p, z, n and Q when missing. Without Y TetGen may split "

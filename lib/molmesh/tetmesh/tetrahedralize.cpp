@@ -124,6 +124,24 @@ void check_closed(const SurfaceMesh& s) {
                 "watertight surface");
 }
 
+// Mean length of the edges at each vertex: the local mesh size the surface already has.
+std::vector<double> mean_edge_lengths(const SurfaceMesh& s) {
+  std::vector<double> sum(s.points.size(), 0.0);
+  std::vector<int> count(s.points.size(), 0);
+  for (const auto& t : s.triangles)
+    for (int k = 0; k < 3; ++k) {
+      // Each interior edge is seen from both triangles, so both ends get it twice.
+      const int a = t[k], b = t[(k + 1) % 3];
+      const double length = (s.points[a] - s.points[b]).norm();
+      sum[a] += length;
+      sum[b] += length;
+      count[a] += 1;
+      count[b] += 1;
+    }
+  for (std::size_t i = 0; i < sum.size(); ++i) sum[i] = count[i] ? sum[i] / count[i] : 0.0;
+  return sum;
+}
+
 std::string format_number(double v) {
   char buf[64];
   std::snprintf(buf, sizeof buf, "%.6g", v);
@@ -218,6 +236,16 @@ TetMesh tetrahedralize(const SurfaceMesh& surface, const Atoms& atoms,
     in.facetmarkerlist[f] = marker;
   }
 
+  if (options.size_factor < 0.0) throw Error("the size factor must be positive (0: no grading)");
+  const bool graded = options.size_factor > 0.0 && options.tetgen_switches.empty();
+  std::vector<double> input_sizes;
+  if (graded) {
+    input_sizes = mean_edge_lengths(surface);
+    const std::vector<double> sphere_sizes = mean_edge_lengths(sphere);
+    input_sizes.insert(input_sizes.end(), sphere_sizes.begin(), sphere_sizes.end());
+    for (double& h : input_sizes) h *= options.size_factor;
+  }
+
   // Atom centres become nodes of the molecule's part. They go into the PLC as isolated
   // vertices, which TetGen puts into its initial Delaunay tetrahedralisation. (Inserting
   // them afterwards with -i crashes TetGen 1.5 in insertconstrainedpoints on mAChE.)
@@ -244,6 +272,13 @@ TetMesh tetrahedralize(const SurfaceMesh& surface, const Atoms& atoms,
     in.pointlist = all_points;
     in.numberofpoints = static_cast<int>(n_all);
   }
+  if (graded) {
+    // Atom centres take no size of their own (0: TetGen interpolates one).
+    in.numberofpointmtrs = 1;
+    in.pointmtrlist = new REAL[static_cast<std::size_t>(in.numberofpoints)];
+    for (int i = 0; i < in.numberofpoints; ++i)
+      in.pointmtrlist[i] = i < n_in ? input_sizes[static_cast<std::size_t>(i)] : 0.0;
+  }
 
   // p: PLC; Y: no Steiner points on the given facets; M: keep coplanar neighbours as
   // separate facets (merging them would let TetGen re-triangulate the surface); z: 0-based;
@@ -259,6 +294,7 @@ TetMesh tetrahedralize(const SurfaceMesh& surface, const Atoms& atoms,
       if (!(*options.max_volume > 0.0)) throw Error("maximum tetrahedron volume must be positive");
       switches += "a" + format_number(*options.max_volume);
     }
+    if (graded) switches += "m";
   } else {
     switches = options.tetgen_switches;
     if (switches.find_first_of("rRwmk") != std::string::npos)
