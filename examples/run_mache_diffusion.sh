@@ -13,7 +13,7 @@ OUT=${OUT:-$ROOT/build/mache-diffusion}
 mkdir -p "$OUT"
 cp "$ROOT/tests/data/mache.pqr" "$OUT/mache.pqr"
 "$MOLMESH" hierarchy "$OUT/mache.pqr" -o "$OUT/mache.h5" --domain exterior --outer-radius 150 \
-  --active-site "$HERE/mache-gorge.spheres" --max-radius-edge 1.5 --t0 0.1,0.3,0.5
+  --active-site "$HERE/mache-gorge.spheres" --t0 0.1,0.3,0.5,0.7
 (cd "$OUT" && apbs "$HERE/mache-apbs.in" > apbs.log)
 # Debian's apbs names the file mache-potential-PE0.dx (one file per processor).
 POT="$OUT/mache-potential.dx"
