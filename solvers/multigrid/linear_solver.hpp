@@ -21,7 +21,10 @@ struct LinearSolverOptions {
 // Solves system.matrix * x = system.rhs (x holds the free unknowns on return). With
 // kMultigrid and no prolongations the V-cycle is algebraic multigrid (a direct solve for
 // small systems).
+// mesh_operators (optional): coarse operators discretised on the coarse meshes
+// (multigrid.hpp).
 SolveReport solve_reduced(const ReducedSystem& system, std::span<const SparseMatrix> prolongations,
-                          const LinearSolverOptions& options, Eigen::VectorXd& x);
+                          const LinearSolverOptions& options, Eigen::VectorXd& x,
+                          std::span<const MeshOperator> mesh_operators = {});
 
 }  // namespace molmesh::solvers

@@ -75,7 +75,8 @@ struct MultigridPreconditioner::Impl {
 MultigridPreconditioner::MultigridPreconditioner(const SparseMatrix& a,
                                                  std::span<const int> fine_free_to_full,
                                                  std::span<const SparseMatrix> prolongations,
-                                                 const MultigridOptions& options)
+                                                 const MultigridOptions& options,
+                                                 std::span<const MeshOperator> mesh_operators)
     : impl_(std::make_unique<Impl>()) {
   impl_->options = options;
   Level fine;
@@ -109,10 +110,22 @@ MultigridPreconditioner::MultigridPreconditioner(const SparseMatrix& a,
     }
     std::vector<int> column_index(column_max.size(), -1);
     std::vector<int> coarse_kept;
-    for (std::size_t c = 0; c < column_max.size(); ++c) {
-      if (column_max[c] >= options.drop_column_below) {
-        column_index[c] = static_cast<int>(coarse_kept.size());
-        coarse_kept.push_back(static_cast<int>(c));
+    const MeshOperator* given = l < mesh_operators.size() ? &mesh_operators[l] : nullptr;
+    if (given) {
+      // The coarse mesh's own unknowns: its Dirichlet vertices are not coarse unknowns.
+      for (int v : given->free_to_full) {
+        if (v < 0 || v >= full.cols())
+          throw Error("multigrid: a coarse operator refers to vertex " + std::to_string(v) +
+                      " beyond its level");
+        column_index[static_cast<std::size_t>(v)] = static_cast<int>(coarse_kept.size());
+        coarse_kept.push_back(v);
+      }
+    } else {
+      for (std::size_t c = 0; c < column_max.size(); ++c) {
+        if (column_max[c] >= options.drop_column_below) {
+          column_index[c] = static_cast<int>(coarse_kept.size());
+          coarse_kept.push_back(static_cast<int>(c));
+        }
       }
     }
     if (coarse_kept.empty()) break;
@@ -139,7 +152,13 @@ MultigridPreconditioner::MultigridPreconditioner(const SparseMatrix& a,
     level.p.setFromTriplets(triplets.begin(), triplets.end());
     level.pt = level.p.transpose();
     Level coarse;
-    coarse.a = galerkin_product(level.pt, level.a, level.p);
+    if (given) {
+      if (given->a.rows() != static_cast<Eigen::Index>(coarse_kept.size()))
+        throw Error("multigrid: a coarse operator's size does not match its unknowns");
+      coarse.a = given->a;
+    } else {
+      coarse.a = galerkin_product(level.pt, level.a, level.p);
+    }
     coarse.a.makeCompressed();
     impl_->levels.push_back(std::move(coarse));
     rows_kept = std::move(coarse_kept);

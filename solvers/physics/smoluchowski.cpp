@@ -1,5 +1,6 @@
 #include "solvers/physics/smoluchowski.hpp"
 
+#include <chrono>
 #include <cmath>
 #include <string>
 
@@ -20,28 +21,31 @@ unsigned marker_mask(const std::vector<int>& list) {
   return mask;
 }
 
-}  // namespace
+// The assembled Slotboom operator of one mesh with its boundary conditions.
+struct Discretisation {
+  SparseMatrix k;  // un-reduced stiffness
+  std::vector<char> dirichlet, is_absorbing, in_solvent;
+  Eigen::VectorXd values;
+  ReducedSystem system;
+  int absorbing_vertices = 0, bulk_vertices = 0, isolated_vertices = 0;
+};
 
-SmoluchowskiResult solve_smoluchowski(const TetMesh& mesh, std::span<const double> beta_w,
-                                      std::span<const SparseMatrix> prolongations,
-                                      const SmoluchowskiOptions& options,
-                                      const Reporter& reporter) {
+Discretisation discretise(const TetMesh& mesh, std::span<const double> beta_w,
+                          const SmoluchowskiOptions& options, const Reporter& reporter) {
   const std::size_t nv = mesh.points.size();
   if (!beta_w.empty() && beta_w.size() != nv) {
     throw Error("Smoluchowski: " + std::to_string(beta_w.size()) + " potential values for " +
                 std::to_string(nv) + " vertices");
   }
-  if (!(options.diffusion_cm2_per_s > 0.0)) {
-    throw Error("Smoluchowski: the diffusion coefficient must be positive");
-  }
-  reporter.progress("smoluchowski: assemble", 0.0);
+  Discretisation out;
   auto bw = [&](std::size_t v) { return beta_w.empty() ? 0.0 : beta_w[v]; };
 
   // exp(-beta W) averaged over each cell's vertices: the integral of its P1 interpolant,
   // which stays accurate where the potential varies quickly near the surface.
   const bool has_regions = mesh.cell_markers.size() == mesh.tetrahedra.size();
   std::vector<double> coefficient(mesh.tetrahedra.size(), 0.0);
-  std::vector<char> in_solvent(nv, 0);
+  out.in_solvent.assign(nv, 0);
+  auto& in_solvent = out.in_solvent;
   for (std::size_t t = 0; t < mesh.tetrahedra.size(); ++t) {
     if (has_regions && mesh.cell_markers[t] != options.solvent_region) continue;
     double sum = 0.0;
@@ -51,27 +55,30 @@ SmoluchowskiResult solve_smoluchowski(const TetMesh& mesh, std::span<const doubl
     }
     coefficient[t] = 0.25 * sum;
   }
-  const SparseMatrix k = assemble_stiffness(mesh, coefficient);
+  out.k = assemble_stiffness(mesh, coefficient);
 
   const std::vector<unsigned> bits = boundary_vertex_marker_bits(mesh);
   const unsigned absorbing = marker_mask(options.absorbing_markers);
   const unsigned bulk = marker_mask(options.bulk_markers);
-  std::vector<char> dirichlet(nv, 0);
-  std::vector<char> is_absorbing(nv, 0);
-  Eigen::VectorXd values = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(nv));
-  SmoluchowskiResult result;
+  out.dirichlet.assign(nv, 0);
+  out.is_absorbing.assign(nv, 0);
+  out.values = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(nv));
+  auto& dirichlet = out.dirichlet;
+  auto& is_absorbing = out.is_absorbing;
+  auto& values = out.values;
+
   for (std::size_t v = 0; v < nv; ++v) {
     if (!in_solvent[v]) {
       dirichlet[v] = 1;  // not part of the problem
     } else if (bits[v] & absorbing) {
       dirichlet[v] = 1;
       is_absorbing[v] = 1;
-      ++result.absorbing_vertices;
+      ++out.absorbing_vertices;
     } else if (bits[v] & bulk) {
       dirichlet[v] = 1;
       // Bulk in Boltzmann equilibrium: c = exp(-beta W), i.e. s = 1 (= c_bulk where W = 0).
       values[static_cast<Eigen::Index>(v)] = 1.0;
-      ++result.bulk_vertices;
+      ++out.bulk_vertices;
     }
   }
   // Solvent pockets that touch neither the bulk nor an absorbing face (closed cavities)
@@ -103,30 +110,68 @@ SmoluchowskiResult solve_smoluchowski(const TetMesh& mesh, std::span<const doubl
       if (in_solvent[v] && !anchored[static_cast<std::size_t>(find(static_cast<int>(v)))]) {
         in_solvent[v] = 0;
         dirichlet[v] = 1;
-        ++result.isolated_vertices;
+        ++out.isolated_vertices;
       }
     }
   }
-  if (result.isolated_vertices > 0) {
-    reporter.warn("Smoluchowski: " + std::to_string(result.isolated_vertices) +
+  if (out.isolated_vertices > 0) {
+    reporter.warn("Smoluchowski: " + std::to_string(out.isolated_vertices) +
                   " solvent vertices lie in closed cavities (no bulk or absorbing boundary); "
                   "they are left out with c = 0");
   }
-  if (result.absorbing_vertices == 0) {
+  if (out.absorbing_vertices == 0) {
     throw Error(
         "Smoluchowski: no solvent vertex lies on an absorbing boundary face (is the "
         "active site marked in this mesh?)");
   }
-  if (result.bulk_vertices == 0) {
+  if (out.bulk_vertices == 0) {
     throw Error("Smoluchowski: no vertex lies on the outer (bulk) boundary");
   }
-  const ReducedSystem system =
-      reduce_dirichlet(k, Eigen::VectorXd::Zero(static_cast<Eigen::Index>(nv)), dirichlet, values);
+  out.system = reduce_dirichlet(out.k, Eigen::VectorXd::Zero(static_cast<Eigen::Index>(nv)),
+                                dirichlet, values);
+  return out;
+}
+
+}  // namespace
+
+SmoluchowskiResult solve_smoluchowski(const TetMesh& mesh, std::span<const double> beta_w,
+                                      std::span<const SparseMatrix> prolongations,
+                                      const SmoluchowskiOptions& options, const Reporter& reporter,
+                                      std::span<const CoarseLevel> coarse_levels) {
+  const std::size_t nv = mesh.points.size();
+  if (!(options.diffusion_cm2_per_s > 0.0)) {
+    throw Error("Smoluchowski: the diffusion coefficient must be positive");
+  }
+  reporter.progress("smoluchowski: assemble", 0.0);
+  auto bw = [&](std::size_t v) { return beta_w.empty() ? 0.0 : beta_w[v]; };
+  Discretisation fine = discretise(mesh, beta_w, options, reporter);
+  SmoluchowskiResult result;
+  result.absorbing_vertices = fine.absorbing_vertices;
+  result.bulk_vertices = fine.bulk_vertices;
+  result.isolated_vertices = fine.isolated_vertices;
+  const ReducedSystem& system = fine.system;
+  const SparseMatrix& k = fine.k;
+  const auto& in_solvent = fine.in_solvent;
+  const auto& is_absorbing = fine.is_absorbing;
+  const auto& dirichlet = fine.dirichlet;
+  const auto& values = fine.values;
+  // Discretising the coarse meshes is part of the multigrid setup: timed and counted there.
+  const auto coarse_start = std::chrono::steady_clock::now();
+  std::vector<MeshOperator> mesh_operators;
+  for (const CoarseLevel& level : coarse_levels) {
+    if (level.mesh == nullptr) throw Error("Smoluchowski: a coarse level has no mesh");
+    Discretisation coarse = discretise(*level.mesh, level.beta_w, options, {});
+    mesh_operators.push_back(
+        {std::move(coarse.system.matrix), std::move(coarse.system.free_to_full)});
+  }
   result.unknowns = static_cast<int>(system.free_to_full.size());
   reporter.progress("smoluchowski: assemble", 1.0);
   reporter.progress("smoluchowski: solve", 0.0);
   Eigen::VectorXd x;
-  result.solve = solve_reduced(system, prolongations, options.solver, x);
+  const double coarse_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - coarse_start).count();
+  result.solve = solve_reduced(system, prolongations, options.solver, x, mesh_operators);
+  result.solve.setup_time_s += coarse_seconds;
   reporter.progress("smoluchowski: solve", 1.0);
   if (!result.solve.converged) {
     reporter.warn("Smoluchowski: CG stopped at relative residual " +

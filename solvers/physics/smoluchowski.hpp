@@ -46,12 +46,22 @@ struct SmoluchowskiResult {
   SolveReport solve;
 };
 
+// A coarser hierarchy level to discretise on its own (multigrid with re-discretised coarse
+// operators, multigrid.hpp): its mesh and beta*W at its vertices (empty: none).
+struct CoarseLevel {
+  const TetMesh* mesh = nullptr;
+  std::span<const double> beta_w;
+};
+
 // beta_w: beta*W per mesh vertex (dimensionless, kT units), or empty for pure diffusion.
 // prolongations: Hierarchy::transfers[l].volume for the levels below `mesh` (may be empty).
+// coarse_levels: one per prolongation to use re-discretised coarse operators instead of
+// Galerkin products (empty: Galerkin).
 // Throws molmesh::Error when there is no absorbing or no bulk vertex.
 SmoluchowskiResult solve_smoluchowski(const TetMesh& mesh, std::span<const double> beta_w,
                                       std::span<const SparseMatrix> prolongations,
                                       const SmoluchowskiOptions& options,
-                                      const Reporter& reporter = {});
+                                      const Reporter& reporter = {},
+                                      std::span<const CoarseLevel> coarse_levels = {});
 
 }  // namespace molmesh::solvers

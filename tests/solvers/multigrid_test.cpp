@@ -55,6 +55,29 @@ TEST(Multigrid, AggregationAloneWhenTheHierarchyHasOneLevel) {
   EXPECT_NEAR(mg.rate_constant_A3_per_s / ic.rate_constant_A3_per_s, 1.0, 1e-6);
 }
 
+TEST(Multigrid, CoarseOperatorsDiscretisedOnTheCoarseMeshes) {
+  const auto h = test::make_shell_hierarchy(
+      {.inner_radius = 10.0, .outer_radius = 100.0, .subdivisions = 4, .radial_layers = 16}, 4);
+  std::vector<CoarseLevel> coarse;
+  for (std::size_t l = 1; l < h.meshes.size(); ++l) coarse.push_back({&h.meshes[l].mesh, {}});
+  SmoluchowskiOptions options;
+  const auto galerkin = solve_smoluchowski(h.meshes[0].mesh, {}, h.prolongations, options);
+  const auto mesh = solve_smoluchowski(h.meshes[0].mesh, {}, h.prolongations, options, {}, coarse);
+  std::printf("coarse operators: Galerkin %d iterations, mesh %d iterations; nonzeros",
+              galerkin.solve.iterations, mesh.solve.iterations);
+  for (std::size_t l = 0; l < mesh.solve.level_nonzeros.size(); ++l)
+    std::printf(" %ld/%ld", galerkin.solve.level_nonzeros[l], mesh.solve.level_nonzeros[l]);
+  std::printf("\n");
+  EXPECT_TRUE(mesh.solve.converged);
+  EXPECT_EQ(mesh.solve.mesh_levels, 4);
+  EXPECT_LE(mesh.solve.iterations, 25);
+  EXPECT_NE(mesh.solve.preconditioner.find("re-discretised"), std::string::npos);
+  // Re-discretised operators keep the mesh stencil: never denser than Galerkin's.
+  for (std::size_t l = 1; l < mesh.solve.level_nonzeros.size(); ++l)
+    EXPECT_LE(mesh.solve.level_nonzeros[l], galerkin.solve.level_nonzeros[l]);
+  EXPECT_NEAR(mesh.rate_constant_A3_per_s / galerkin.rate_constant_A3_per_s, 1.0, 1e-6);
+}
+
 TEST(Multigrid, IncompleteCholeskyNeedsMoreIterationsOnFinerMeshes) {
   int previous_ic = 0;
   for (int refinement = 2; refinement <= 4; ++refinement) {

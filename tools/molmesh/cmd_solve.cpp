@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -42,6 +43,7 @@ struct SmoluchowskiArgs {
   std::string absorbing = "surface";
   std::string potential;
   double charge = 1.0;
+  std::string coarse_operators = "galerkin";
 };
 
 struct PoissonArgs {
@@ -153,9 +155,10 @@ void run_smoluchowski(const SmoluchowskiArgs& args, const CliContext& ctx) {
   const TetMesh& mesh = loaded.hierarchy.levels[static_cast<std::size_t>(args.common.level)].volume;
   std::vector<double> beta_w;
   int outside = 0;
+  std::optional<Grid> grid;
   if (!args.potential.empty()) {
-    const Grid grid = read_volume(args.potential);
-    const auto field = solvers::interpolate_trilinear(grid, mesh.points);
+    grid = read_volume(args.potential);
+    const auto field = solvers::interpolate_trilinear(*grid, mesh.points);
     outside = field.outside;
     if (outside > 0) {
       reporter.warn(std::to_string(outside) + " of " + std::to_string(mesh.points.size()) +
@@ -173,8 +176,28 @@ void run_smoluchowski(const SmoluchowskiArgs& args, const CliContext& ctx) {
           ? std::vector<int>{markers::kActiveSite}
           : std::vector<int>{markers::kMolecularSurface, markers::kActiveSite};
   options.solver = solver_options(args.common);
-  const auto result =
-      solvers::solve_smoluchowski(mesh, beta_w, loaded.prolongations, options, reporter);
+  // --coarse-operators mesh: every coarse level used is discretised on its own mesh, with
+  // the potential interpolated to its vertices the same way.
+  std::vector<std::vector<double>> coarse_beta_w;
+  std::vector<solvers::CoarseLevel> coarse_levels;
+  if (args.coarse_operators == "mesh" && args.common.preconditioner == "multigrid") {
+    for (std::size_t l = 0; l < loaded.prolongations.size(); ++l) {
+      const TetMesh& coarse =
+          loaded.hierarchy.levels[static_cast<std::size_t>(args.common.level) + l + 1].volume;
+      std::vector<double> values;
+      if (grid) {
+        values = solvers::interpolate_trilinear(*grid, coarse.points).values;
+        for (double& v : values) v *= args.charge;
+      }
+      coarse_beta_w.push_back(std::move(values));
+    }
+    for (std::size_t l = 0; l < loaded.prolongations.size(); ++l)
+      coarse_levels.push_back(
+          {&loaded.hierarchy.levels[static_cast<std::size_t>(args.common.level) + l + 1].volume,
+           coarse_beta_w[l]});
+  }
+  const auto result = solvers::solve_smoluchowski(mesh, beta_w, loaded.prolongations, options,
+                                                  reporter, coarse_levels);
   store_field(args.common, "concentration", result.concentration);
   if (!beta_w.empty()) {
     store_field(
@@ -189,6 +212,7 @@ void run_smoluchowski(const SmoluchowskiArgs& args, const CliContext& ctx) {
   j["tetrahedra"] = mesh.tetrahedra.size();
   j["unknowns"] = result.unknowns;
   j["absorbing"] = args.absorbing;
+  j["coarse_operators"] = args.coarse_operators;
   j["absorbing_vertices"] = result.absorbing_vertices;
   j["bulk_vertices"] = result.bulk_vertices;
   j["isolated_cavity_vertices"] = result.isolated_vertices;
@@ -287,6 +311,11 @@ const CommandRegistration registration{
           ->check(CLI::ExistingFile);
       s->add_option("--charge", smol->charge,
                     "Charge z of the diffusing ligand: beta W = z * phi (used with --potential)")
+          ->capture_default_str();
+      s->add_option("--coarse-operators", smol->coarse_operators,
+                    "Multigrid coarse operators: galerkin (P^T A P, exact but its stencil widens "
+                    "on a non-nested hierarchy) or mesh (discretised on each coarse mesh)")
+          ->check(CLI::IsMember({"galerkin", "mesh"}))
           ->capture_default_str();
       s->callback([smol, &ctx] { run_smoluchowski(*smol, ctx); });
 
