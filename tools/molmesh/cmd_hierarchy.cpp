@@ -1,11 +1,11 @@
 // `molmesh hierarchy`: atoms -> surface -> multilevel surface and volume meshes (GAMer
 // §4.3) with transfer operators, in one HDF5 file plus XDMF sidecars.
 #include <CLI/CLI.hpp>
+#include <charconv>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <map>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -47,11 +47,11 @@ struct HierarchyArgs {
   bool no_renumber = false;
 };
 
+// Shortest text that reads back to the same double (0.2, not 0.20000000000000001).
 std::string text(double v) {
-  std::ostringstream out;
-  out.precision(17);
-  out << v;
-  return out.str();
+  char buffer[32];
+  const auto result = std::to_chars(buffer, buffer + sizeof buffer, v);
+  return std::string(buffer, result.ptr);
 }
 
 std::string join(const std::vector<double>& values) {
