@@ -100,15 +100,7 @@ MultigridPreconditioner::MultigridPreconditioner(const SparseMatrix& a,
                     std::to_string(v));
       }
     }
-    // Largest weight per coarse column among the rows that stay.
-    std::vector<double> column_max(static_cast<std::size_t>(full.cols()), 0.0);
-    for (int v : rows_kept) {
-      for (SparseMatrix::InnerIterator it(full, v); it; ++it) {
-        auto& m = column_max[static_cast<std::size_t>(it.col())];
-        m = std::max(m, std::abs(it.value()));
-      }
-    }
-    std::vector<int> column_index(column_max.size(), -1);
+    std::vector<int> column_index(static_cast<std::size_t>(full.cols()), -1);
     std::vector<int> coarse_kept;
     const MeshOperator* given = l < mesh_operators.size() ? &mesh_operators[l] : nullptr;
     if (given) {
@@ -121,6 +113,14 @@ MultigridPreconditioner::MultigridPreconditioner(const SparseMatrix& a,
         coarse_kept.push_back(v);
       }
     } else {
+      // Largest weight per coarse column among the rows that stay.
+      std::vector<double> column_max(static_cast<std::size_t>(full.cols()), 0.0);
+      for (int v : rows_kept) {
+        for (SparseMatrix::InnerIterator it(full, v); it; ++it) {
+          auto& m = column_max[static_cast<std::size_t>(it.col())];
+          m = std::max(m, std::abs(it.value()));
+        }
+      }
       for (std::size_t c = 0; c < column_max.size(); ++c) {
         if (column_max[c] >= options.drop_column_below) {
           column_index[c] = static_cast<int>(coarse_kept.size());

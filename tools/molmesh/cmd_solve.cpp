@@ -153,21 +153,24 @@ void run_smoluchowski(const SmoluchowskiArgs& args, const CliContext& ctx) {
   const Reporter reporter = ctx.reporter();
   const Loaded loaded = load(args.common);
   const TetMesh& mesh = loaded.hierarchy.levels[static_cast<std::size_t>(args.common.level)].volume;
-  std::vector<double> beta_w;
-  int outside = 0;
   std::optional<Grid> grid;
-  if (!args.potential.empty()) {
-    grid = read_volume(args.potential);
-    const auto field = solvers::interpolate_trilinear(*grid, mesh.points);
-    outside = field.outside;
-    if (outside > 0) {
-      reporter.warn(std::to_string(outside) + " of " + std::to_string(mesh.points.size()) +
-                    " mesh vertices lie outside the potential grid " + args.potential +
-                    "; they take the value at the nearest grid point");
-    }
-    beta_w.resize(field.values.size());
-    // APBS writes the potential in kT/e: beta W = z * phi for an ion of charge z.
-    for (std::size_t v = 0; v < beta_w.size(); ++v) beta_w[v] = args.charge * field.values[v];
+  if (!args.potential.empty()) grid = read_volume(args.potential);
+  // APBS writes the potential in kT/e: beta W = z * phi for an ion of charge z.
+  int outside = 0;
+  auto beta_w_at = [&](const TetMesh& m, int* outside_count) {
+    std::vector<double> values;
+    if (!grid) return values;
+    const auto field = solvers::interpolate_trilinear(*grid, m.points);
+    if (outside_count) *outside_count = field.outside;
+    values = field.values;
+    for (double& v : values) v *= args.charge;
+    return values;
+  };
+  const std::vector<double> beta_w = beta_w_at(mesh, &outside);
+  if (outside > 0) {
+    reporter.warn(std::to_string(outside) + " of " + std::to_string(mesh.points.size()) +
+                  " mesh vertices lie outside the potential grid " + args.potential +
+                  "; they take the value at the nearest grid point");
   }
   solvers::SmoluchowskiOptions options;
   options.diffusion_cm2_per_s = args.diffusion;
@@ -181,20 +184,13 @@ void run_smoluchowski(const SmoluchowskiArgs& args, const CliContext& ctx) {
   std::vector<std::vector<double>> coarse_beta_w;
   std::vector<solvers::CoarseLevel> coarse_levels;
   if (args.coarse_operators == "mesh" && args.common.preconditioner == "multigrid") {
+    coarse_beta_w.reserve(loaded.prolongations.size());  // coarse_levels point into it
     for (std::size_t l = 0; l < loaded.prolongations.size(); ++l) {
       const TetMesh& coarse =
           loaded.hierarchy.levels[static_cast<std::size_t>(args.common.level) + l + 1].volume;
-      std::vector<double> values;
-      if (grid) {
-        values = solvers::interpolate_trilinear(*grid, coarse.points).values;
-        for (double& v : values) v *= args.charge;
-      }
-      coarse_beta_w.push_back(std::move(values));
+      coarse_beta_w.push_back(beta_w_at(coarse, nullptr));
+      coarse_levels.push_back({&coarse, coarse_beta_w.back()});
     }
-    for (std::size_t l = 0; l < loaded.prolongations.size(); ++l)
-      coarse_levels.push_back(
-          {&loaded.hierarchy.levels[static_cast<std::size_t>(args.common.level) + l + 1].volume,
-           coarse_beta_w[l]});
   }
   const auto result = solvers::solve_smoluchowski(mesh, beta_w, loaded.prolongations, options,
                                                   reporter, coarse_levels);
