@@ -32,23 +32,30 @@ ReducedSystem reduce_dirichlet(const SparseMatrix& a, const Eigen::VectorXd& b,
   const auto nf = static_cast<Eigen::Index>(s.free_to_full.size());
   if (nf == 0) throw Error("every vertex has a Dirichlet value: nothing to solve");
   s.rhs.resize(nf);
-  std::vector<Eigen::Triplet<double, int>> triplets;
-  triplets.reserve(static_cast<std::size_t>(a.nonZeros()));
+  // Free rows keep their order and columns are renumbered monotonically, so the reduced
+  // matrix is written row by row, already sorted.
+  std::vector<int> outer(static_cast<std::size_t>(nf) + 1, 0);
+  std::vector<int> inner;
+  std::vector<double> kept;
+  inner.reserve(static_cast<std::size_t>(a.nonZeros()));
+  kept.reserve(static_cast<std::size_t>(a.nonZeros()));
   for (Eigen::Index i = 0; i < nf; ++i) {
     const int row = s.free_to_full[static_cast<std::size_t>(i)];
     double r = b[row];
     for (SparseMatrix::InnerIterator it(a, row); it; ++it) {
       const int col = s.full_to_free[static_cast<std::size_t>(it.col())];
       if (col >= 0) {
-        triplets.emplace_back(static_cast<int>(i), col, it.value());
+        inner.push_back(col);
+        kept.push_back(it.value());
       } else {
         r -= it.value() * values[it.col()];
       }
     }
     s.rhs[i] = r;
+    outer[static_cast<std::size_t>(i) + 1] = static_cast<int>(inner.size());
   }
-  s.matrix.resize(nf, nf);
-  s.matrix.setFromTriplets(triplets.begin(), triplets.end());
+  s.matrix = SparseMatrix(Eigen::Map<const SparseMatrix>(
+      nf, nf, static_cast<Eigen::Index>(inner.size()), outer.data(), inner.data(), kept.data()));
   return s;
 }
 

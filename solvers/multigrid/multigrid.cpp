@@ -1,11 +1,13 @@
 #include "solvers/multigrid/multigrid.hpp"
 
 #include <Eigen/SparseCholesky>
+#include <algorithm>
 #include <cmath>
 #include <string>
 
 #include "molmesh/core/error.hpp"
 #include "solvers/multigrid/aggregation.hpp"
+#include "solvers/multigrid/gauss_seidel.hpp"
 #include "solvers/multigrid/pcg.hpp"
 #include "solvers/multigrid/sparse_product.hpp"
 
@@ -17,28 +19,31 @@ using ColMajor = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
 
 struct Level {
   SparseMatrix a;
-  Eigen::VectorXd inverse_diagonal;
-  SparseMatrix p;   // this level x next coarser level (empty on the coarsest)
-  SparseMatrix pt;  // restriction
+  GaussSeidelSmoother smoother;  // set once every level exists (it points at a)
+  SparseMatrix p;                // this level x next coarser level (empty on the coarsest)
+  SparseMatrix pt;               // restriction
 };
 
-void gauss_seidel(const Level& level, const Eigen::VectorXd& b, Eigen::VectorXd& x, bool forward) {
-  const SparseMatrix& a = level.a;
-  const int* outer = a.outerIndexPtr();
-  const int* inner = a.innerIndexPtr();
-  const double* values = a.valuePtr();
-  const auto n = a.rows();
-  auto relax = [&](Eigen::Index i) {
-    double sum = b[i];
-    for (int k = outer[i]; k < outer[i + 1]; ++k) sum -= values[k] * x[inner[k]];
-    // The loop subtracted the diagonal term too; add it back through the update.
-    x[i] += sum * level.inverse_diagonal[i];
-  };
-  if (forward) {
-    for (Eigen::Index i = 0; i < n; ++i) relax(i);
-  } else {
-    for (Eigen::Index i = n - 1; i >= 0; --i) relax(i);
+// The rows `rows` of m (in that order), with column c renumbered column_index[c] and
+// dropped where that is negative. Renumbering is increasing, so rows stay sorted.
+SparseMatrix select_rows_and_columns(const SparseMatrix& m, std::span<const int> rows,
+                                     std::span<const int> column_index, Eigen::Index columns) {
+  std::vector<int> outer(rows.size() + 1, 0);
+  std::vector<int> inner;
+  std::vector<double> values;
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    for (SparseMatrix::InnerIterator it(m, rows[i]); it; ++it) {
+      const int c = column_index[static_cast<std::size_t>(it.col())];
+      if (c >= 0) {
+        inner.push_back(c);
+        values.push_back(it.value());
+      }
+    }
+    outer[i + 1] = static_cast<int>(inner.size());
   }
+  return SparseMatrix(Eigen::Map<const SparseMatrix>(
+      static_cast<Eigen::Index>(rows.size()), columns, static_cast<Eigen::Index>(inner.size()),
+      outer.data(), inner.data(), values.data()));
 }
 
 }  // namespace
@@ -56,11 +61,15 @@ struct MultigridPreconditioner::Impl {
       return;
     }
     const Level& level = levels[l];
-    x = Eigen::VectorXd::Zero(b.size());
-    for (int s = 0; s < options.smoothing_sweeps; ++s) gauss_seidel(level, b, x, true);
-    Eigen::VectorXd ax;
-    parallel_multiply(level.a, x, ax);
-    const Eigen::VectorXd residual = b - ax;
+    forward_sweep_from_zero(level.smoother, b, x);
+    Eigen::VectorXd before;
+    for (int s = 1; s < options.smoothing_sweeps; ++s) {
+      before = x;
+      forward_sweep(level.smoother, b, x);
+    }
+    Eigen::VectorXd residual;
+    residual_after_forward_sweep(level.smoother, options.smoothing_sweeps > 1 ? &before : nullptr,
+                                 x, residual);
     Eigen::VectorXd rc;
     parallel_multiply(level.pt, residual, rc);
     Eigen::VectorXd xc;
@@ -68,7 +77,7 @@ struct MultigridPreconditioner::Impl {
     Eigen::VectorXd correction;
     parallel_multiply(level.p, xc, correction);
     x += correction;
-    for (int s = 0; s < options.smoothing_sweeps; ++s) gauss_seidel(level, b, x, false);
+    for (int s = 0; s < options.smoothing_sweeps; ++s) backward_sweep(level.smoother, b, x);
   }
 };
 
@@ -78,6 +87,9 @@ MultigridPreconditioner::MultigridPreconditioner(const SparseMatrix& a,
                                                  const MultigridOptions& options,
                                                  std::span<const MeshOperator> mesh_operators)
     : impl_(std::make_unique<Impl>()) {
+  if (options.smoothing_sweeps < 1)
+    throw Error("multigrid: at least one smoothing sweep is needed (got " +
+                std::to_string(options.smoothing_sweeps) + ")");
   impl_->options = options;
   Level fine;
   fine.a = a;
@@ -139,17 +151,9 @@ MultigridPreconditioner::MultigridPreconditioner(const SparseMatrix& a,
       }
       if (ratio > options.max_last_coarse_ratio) break;
     }
-    std::vector<Eigen::Triplet<double, int>> triplets;
-    for (std::size_t i = 0; i < rows_kept.size(); ++i) {
-      for (SparseMatrix::InnerIterator it(full, rows_kept[i]); it; ++it) {
-        const int c = column_index[static_cast<std::size_t>(it.col())];
-        if (c >= 0) triplets.emplace_back(static_cast<int>(i), c, it.value());
-      }
-    }
     Level& level = impl_->levels.back();
-    level.p.resize(static_cast<Eigen::Index>(rows_kept.size()),
-                   static_cast<Eigen::Index>(coarse_kept.size()));
-    level.p.setFromTriplets(triplets.begin(), triplets.end());
+    level.p = select_rows_and_columns(full, rows_kept, column_index,
+                                      static_cast<Eigen::Index>(coarse_kept.size()));
     level.pt = level.p.transpose();
     Level coarse;
     if (given) {
@@ -178,12 +182,9 @@ MultigridPreconditioner::MultigridPreconditioner(const SparseMatrix& a,
     coarse.a.makeCompressed();
     impl_->levels.push_back(std::move(coarse));
   }
-  for (Level& level : impl_->levels) {
-    level.inverse_diagonal = level.a.diagonal().cwiseInverse();
-    if (!level.inverse_diagonal.allFinite()) {
-      throw Error("multigrid: a level's operator has a zero diagonal entry");
-    }
-  }
+  for (Level& level : impl_->levels)
+    level.smoother = make_gauss_seidel(level.a, options.smoothing_blocks);
+
   const ColMajor coarsest(impl_->levels.back().a);
   impl_->coarse_solver.compute(coarsest);
   if (impl_->coarse_solver.info() != Eigen::Success && impl_->levels.size() > 1) {

@@ -13,9 +13,9 @@
 // until at most max_direct_unknowns are left; a hierarchy of one level gives plain
 // algebraic multigrid.
 //
-// Smoothing is symmetric Gauss-Seidel (forward before restriction, backward after
-// prolongation), the coarsest level is solved exactly with a sparse LDL^T, so the V-cycle
-// is a symmetric positive definite operator, as CG requires.
+// Smoothing is symmetric block Gauss-Seidel (forward before restriction, backward after
+// prolongation; gauss_seidel.hpp), the coarsest level is solved exactly with a sparse LDL^T, so the
+// V-cycle is a symmetric positive definite operator, as CG requires.
 #include <Eigen/Core>
 #include <memory>
 #include <span>
@@ -27,7 +27,10 @@
 namespace molmesh::solvers {
 
 struct MultigridOptions {
-  int smoothing_sweeps = 2;  // Gauss-Seidel sweeps before and after the coarse correction
+  int smoothing_sweeps = 1;  // Gauss-Seidel sweeps before and after the coarse correction
+  // Gauss-Seidel runs on this many row blocks in parallel (gauss_seidel.hpp). Results
+  // depend on it, not on the thread count; 1 is the classic sequential smoother.
+  int smoothing_blocks = 4;
   // A coarse column whose largest remaining weight is below this is dropped (see above).
   double drop_column_below = 1e-6;
   // A hierarchy level with more than this fraction of the current level's unknowns is

@@ -182,5 +182,32 @@ TEST(Renumber, ReverseCuthillMcKeeIsAPermutationThatShrinksBandwidth) {
   }
 }
 
+TEST(Renumber, CellsSortedByLowestVertexKeepTheirMarkers) {
+  auto cube = testing::structured_cube(4);
+  cube.cell_markers.resize(cube.tetrahedra.size());
+  for (std::size_t t = 0; t < cube.tetrahedra.size(); ++t)
+    cube.cell_markers[t] = static_cast<int>(t % 5);
+  std::reverse(cube.tetrahedra.begin(), cube.tetrahedra.end());
+  std::reverse(cube.cell_markers.begin(), cube.cell_markers.end());
+  const TetMesh sorted = sort_cells_by_vertex(cube);
+  ASSERT_EQ(sorted.tetrahedra.size(), cube.tetrahedra.size());
+  ASSERT_EQ(sorted.cell_markers.size(), cube.cell_markers.size());
+  auto lowest = [](const Tetrahedron& t) { return *std::min_element(t.begin(), t.end()); };
+  // (cell, marker) pairs are the same multiset, now in order of their lowest vertex.
+  std::vector<std::pair<Tetrahedron, int>> before, after;
+  for (std::size_t t = 0; t < cube.tetrahedra.size(); ++t) {
+    before.emplace_back(cube.tetrahedra[t], cube.cell_markers[t]);
+    after.emplace_back(sorted.tetrahedra[t], sorted.cell_markers[t]);
+    if (t > 0) {
+      EXPECT_LE(lowest(sorted.tetrahedra[t - 1]), lowest(sorted.tetrahedra[t]));
+    }
+  }
+  std::sort(before.begin(), before.end());
+  std::sort(after.begin(), after.end());
+  EXPECT_EQ(before, after);
+  EXPECT_EQ(sorted.points, cube.points);
+  EXPECT_EQ(sorted.boundary_faces, cube.boundary_faces);
+}
+
 }  // namespace
 }  // namespace molmesh

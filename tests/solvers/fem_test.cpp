@@ -42,6 +42,46 @@ TEST(P1Assembly, StiffnessIsSymmetricAnnihilatesConstantsAndGivesExactEnergyOfLi
   EXPECT_NEAR(u.dot(k * u), 14.0 * volume, 1e-9 * 14.0 * volume);
 }
 
+// The row-wise gather must give exactly the matrix of the textbook cell-by-cell scatter.
+TEST(P1Assembly, RowGatherEqualsCellByCellScatter) {
+  const auto shell = test::make_shell_mesh({.inner_radius = 3.0,
+                                            .outer_radius = 9.0,
+                                            .subdivisions = 2,
+                                            .radial_layers = 3,
+                                            .ball_layers = 2});
+  const TetMesh& m = shell.mesh;
+  std::vector<double> coefficient(m.tetrahedra.size());
+  for (std::size_t t = 0; t < coefficient.size(); ++t) coefficient[t] = 1.0 + 0.1 * double(t % 7);
+  std::vector<Eigen::Triplet<double, int>> triplets;
+  for (std::size_t t = 0; t < m.tetrahedra.size(); ++t) {
+    const TetGeometry g = tet_geometry(m, t);
+    for (std::size_t a = 0; a < 4; ++a)
+      for (std::size_t b = 0; b < 4; ++b)
+        triplets.emplace_back(m.tetrahedra[t][a], m.tetrahedra[t][b],
+                              coefficient[t] * g.volume * g.gradients[a].dot(g.gradients[b]));
+  }
+  SparseMatrix reference(static_cast<Eigen::Index>(m.points.size()),
+                         static_cast<Eigen::Index>(m.points.size()));
+  reference.setFromTriplets(triplets.begin(), triplets.end());
+  const SparseMatrix k = assemble_stiffness(m, coefficient);
+  ASSERT_EQ(k.nonZeros(), reference.nonZeros());  // same pattern, every vertex pair once
+  EXPECT_LT((k - reference).norm(), 1e-13 * reference.norm());
+  for (Eigen::Index i = 0; i < k.rows(); ++i) {
+    int previous = -1;
+    for (SparseMatrix::InnerIterator it(k, i); it; ++it) {
+      EXPECT_GT(it.col(), previous);
+      previous = static_cast<int>(it.col());
+    }
+  }
+}
+
+TEST(P1Assembly, RejectsCellsWithVerticesOutsideTheMesh) {
+  auto shell = test::make_shell_mesh({.subdivisions = 0, .radial_layers = 1});
+  shell.mesh.tetrahedra[3][2] = static_cast<int>(shell.mesh.points.size());
+  const std::vector<double> ones(shell.mesh.tetrahedra.size(), 1.0);
+  EXPECT_THROW(assemble_stiffness(shell.mesh, ones), Error);
+}
+
 TEST(P1Assembly, RejectsInvertedTetrahedra) {
   auto shell = test::make_shell_mesh({.subdivisions = 0, .radial_layers = 1});
   std::swap(shell.mesh.tetrahedra[0][0], shell.mesh.tetrahedra[0][1]);

@@ -108,7 +108,7 @@ Hierarchy build_hierarchy(const SurfaceMesh& surface, const Atoms& atoms,
     level_report.bandwidth_before = vertex_bandwidth(out.volume);
     if (options.renumber) {
       out.volume_permutation = reverse_cuthill_mckee(out.volume);
-      out.volume = permute_vertices(out.volume, out.volume_permutation);
+      out.volume = sort_cells_by_vertex(permute_vertices(out.volume, out.volume_permutation));
     }
     level_report.bandwidth_after = vertex_bandwidth(out.volume);
     level_report.renumber_seconds = seconds_since(tick);

@@ -85,6 +85,24 @@ TetMesh permute_vertices(const TetMesh& mesh, const std::vector<int>& permutatio
   return out;
 }
 
+TetMesh sort_cells_by_vertex(const TetMesh& mesh) {
+  const std::size_t nt = mesh.tetrahedra.size();
+  std::vector<std::pair<int, int>> key(nt);  // (lowest vertex, cell)
+  for (std::size_t t = 0; t < nt; ++t) {
+    const auto& cell = mesh.tetrahedra[t];
+    key[t] = {*std::min_element(cell.begin(), cell.end()), static_cast<int>(t)};
+  }
+  std::sort(key.begin(), key.end());
+  TetMesh out = mesh;
+  const bool has_markers = mesh.cell_markers.size() == nt;
+  for (std::size_t t = 0; t < nt; ++t) {
+    const auto old = static_cast<std::size_t>(key[t].second);
+    out.tetrahedra[t] = mesh.tetrahedra[old];
+    if (has_markers) out.cell_markers[t] = mesh.cell_markers[old];
+  }
+  return out;
+}
+
 int vertex_bandwidth(const TetMesh& mesh) {
   int bandwidth = 0;
   for (const auto& t : mesh.tetrahedra) {
