@@ -33,29 +33,32 @@ ReducedSystem reduce_dirichlet(const SparseMatrix& a, const Eigen::VectorXd& b,
   if (nf == 0) throw Error("every vertex has a Dirichlet value: nothing to solve");
   s.rhs.resize(nf);
   // Free rows keep their order and columns are renumbered monotonically, so the reduced
-  // matrix is written row by row, already sorted.
-  std::vector<int> outer(static_cast<std::size_t>(nf) + 1, 0);
-  std::vector<int> inner;
-  std::vector<double> kept;
-  inner.reserve(static_cast<std::size_t>(a.nonZeros()));
-  kept.reserve(static_cast<std::size_t>(a.nonZeros()));
+  // matrix is written row by row, already sorted, straight into its storage (sized for
+  // the worst case; pages never written are never touched).
+  s.matrix.resize(nf, nf);
+  s.matrix.resizeNonZeros(a.nonZeros());
+  int* outer = s.matrix.outerIndexPtr();
+  int* inner = s.matrix.innerIndexPtr();
+  double* kept = s.matrix.valuePtr();
+  int count = 0;
+  outer[0] = 0;
   for (Eigen::Index i = 0; i < nf; ++i) {
     const int row = s.free_to_full[static_cast<std::size_t>(i)];
     double r = b[row];
     for (SparseMatrix::InnerIterator it(a, row); it; ++it) {
       const int col = s.full_to_free[static_cast<std::size_t>(it.col())];
       if (col >= 0) {
-        inner.push_back(col);
-        kept.push_back(it.value());
+        inner[count] = col;
+        kept[count] = it.value();
+        ++count;
       } else {
         r -= it.value() * values[it.col()];
       }
     }
     s.rhs[i] = r;
-    outer[static_cast<std::size_t>(i) + 1] = static_cast<int>(inner.size());
+    outer[i + 1] = count;
   }
-  s.matrix = SparseMatrix(Eigen::Map<const SparseMatrix>(
-      nf, nf, static_cast<Eigen::Index>(inner.size()), outer.data(), inner.data(), kept.data()));
+  s.matrix.resizeNonZeros(count);
   return s;
 }
 

@@ -7,7 +7,8 @@ namespace molmesh::solvers {
 
 SolveReport solve_reduced(const ReducedSystem& system, std::span<const SparseMatrix> prolongations,
                           const LinearSolverOptions& options, Eigen::VectorXd& x,
-                          std::span<const MeshOperator> mesh_operators) {
+                          std::vector<MeshOperator> mesh_operators) {
+  const bool mesh_coarse_operators = !mesh_operators.empty();
   const auto start = std::chrono::steady_clock::now();
   Preconditioner preconditioner;
   std::vector<int> sizes;
@@ -16,8 +17,9 @@ SolveReport solve_reduced(const ReducedSystem& system, std::span<const SparseMat
   std::size_t mesh_levels = 0;
   std::vector<long> nonzeros;
   if (options.preconditioning == Preconditioning::kMultigrid) {
-    mg = std::make_shared<MultigridPreconditioner>(
-        system.matrix, system.free_to_full, prolongations, options.multigrid, mesh_operators);
+    mg =
+        std::make_shared<MultigridPreconditioner>(system.matrix, system.free_to_full, prolongations,
+                                                  options.multigrid, std::move(mesh_operators));
     sizes = mg->level_sizes();
     mesh_levels = mg->mesh_levels();
     nonzeros = mg->level_nonzeros();
@@ -26,7 +28,7 @@ SolveReport solve_reduced(const ReducedSystem& system, std::span<const SparseMat
       name = "direct (sparse LDLT)";
     } else {
       name = std::string("multigrid V-cycle (symmetric Gauss-Seidel, ") +
-             (mesh_operators.empty() ? "Galerkin coarse operators; "
+             (!mesh_coarse_operators ? "Galerkin coarse operators; "
                                      : "re-discretised coarse mesh operators; ") +
              std::to_string(mesh_levels) + " mesh + " + std::to_string(sizes.size() - mesh_levels) +
              " aggregation levels" + (mg->coarsest_was_shifted() ? ", shifted coarsest)" : ")");

@@ -25,6 +25,6 @@ struct LinearSolverOptions {
 // (multigrid.hpp).
 SolveReport solve_reduced(const ReducedSystem& system, std::span<const SparseMatrix> prolongations,
                           const LinearSolverOptions& options, Eigen::VectorXd& x,
-                          std::span<const MeshOperator> mesh_operators = {});
+                          std::vector<MeshOperator> mesh_operators = {});
 
 }  // namespace molmesh::solvers

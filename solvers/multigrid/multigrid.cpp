@@ -18,32 +18,40 @@ namespace {
 using ColMajor = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
 
 struct Level {
-  SparseMatrix a;
-  GaussSeidelSmoother smoother;  // set once every level exists (it points at a)
-  SparseMatrix p;                // this level x next coarser level (empty on the coarsest)
-  SparseMatrix pt;               // restriction
+  // The level's operator: the caller's fine matrix on level 0 (not copied), `owned` below.
+  // Set, with the smoother that also points at it, once every level exists.
+  const SparseMatrix* a = nullptr;
+  SparseMatrix owned;
+  GaussSeidelSmoother smoother;
+  SparseMatrix p;   // this level x next coarser level (empty on the coarsest)
+  SparseMatrix pt;  // restriction
 };
 
 // The rows `rows` of m (in that order), with column c renumbered column_index[c] and
 // dropped where that is negative. Renumbering is increasing, so rows stay sorted.
 SparseMatrix select_rows_and_columns(const SparseMatrix& m, std::span<const int> rows,
                                      std::span<const int> column_index, Eigen::Index columns) {
-  std::vector<int> outer(rows.size() + 1, 0);
-  std::vector<int> inner;
-  std::vector<double> values;
+  SparseMatrix out(static_cast<Eigen::Index>(rows.size()), columns);
+  std::size_t upper_bound = 0;
+  for (int r : rows)
+    upper_bound += static_cast<std::size_t>(m.outerIndexPtr()[r + 1] - m.outerIndexPtr()[r]);
+  out.resizeNonZeros(static_cast<Eigen::Index>(upper_bound));
+  int* outer = out.outerIndexPtr();
+  int count = 0;
+  outer[0] = 0;
   for (std::size_t i = 0; i < rows.size(); ++i) {
     for (SparseMatrix::InnerIterator it(m, rows[i]); it; ++it) {
       const int c = column_index[static_cast<std::size_t>(it.col())];
       if (c >= 0) {
-        inner.push_back(c);
-        values.push_back(it.value());
+        out.innerIndexPtr()[count] = c;
+        out.valuePtr()[count] = it.value();
+        ++count;
       }
     }
-    outer[i + 1] = static_cast<int>(inner.size());
+    outer[i + 1] = count;
   }
-  return SparseMatrix(Eigen::Map<const SparseMatrix>(
-      static_cast<Eigen::Index>(rows.size()), columns, static_cast<Eigen::Index>(inner.size()),
-      outer.data(), inner.data(), values.data()));
+  out.resizeNonZeros(count);
+  return out;
 }
 
 }  // namespace
@@ -85,16 +93,21 @@ MultigridPreconditioner::MultigridPreconditioner(const SparseMatrix& a,
                                                  std::span<const int> fine_free_to_full,
                                                  std::span<const SparseMatrix> prolongations,
                                                  const MultigridOptions& options,
-                                                 std::span<const MeshOperator> mesh_operators)
+                                                 std::vector<MeshOperator> mesh_operators)
     : impl_(std::make_unique<Impl>()) {
   if (options.smoothing_sweeps < 1)
     throw Error("multigrid: at least one smoothing sweep is needed (got " +
                 std::to_string(options.smoothing_sweeps) + ")");
   impl_->options = options;
-  Level fine;
-  fine.a = a;
-  fine.a.makeCompressed();
-  impl_->levels.push_back(std::move(fine));
+  auto& levels = impl_->levels;
+  levels.emplace_back();
+  if (!a.isCompressed()) {
+    levels[0].owned = a;
+    levels[0].owned.makeCompressed();
+  }
+  const auto operator_of = [&](std::size_t l) -> const SparseMatrix& {
+    return l == 0 && a.isCompressed() ? a : levels[l].owned;
+  };
   // rows_kept[i] = vertex (of the current coarse mesh) behind unknown i on that level.
   std::vector<int> rows_kept(fine_free_to_full.begin(), fine_free_to_full.end());
   // A hierarchy level that is barely smaller than the current one would cost as much as
@@ -103,7 +116,9 @@ MultigridPreconditioner::MultigridPreconditioner(const SparseMatrix& a,
   SparseMatrix pending;
   bool has_pending = false;
   for (std::size_t l = 0; l < prolongations.size(); ++l) {
-    const SparseMatrix full = has_pending ? multiply(pending, prolongations[l]) : prolongations[l];
+    SparseMatrix composed;
+    if (has_pending) composed = multiply(pending, prolongations[l]);
+    const SparseMatrix& full = has_pending ? composed : prolongations[l];
     has_pending = false;
     for (int v : rows_kept) {
       if (v < 0 || v >= full.rows()) {
@@ -114,7 +129,7 @@ MultigridPreconditioner::MultigridPreconditioner(const SparseMatrix& a,
     }
     std::vector<int> column_index(static_cast<std::size_t>(full.cols()), -1);
     std::vector<int> coarse_kept;
-    const MeshOperator* given = l < mesh_operators.size() ? &mesh_operators[l] : nullptr;
+    MeshOperator* given = l < mesh_operators.size() ? &mesh_operators[l] : nullptr;
     if (given) {
       // The coarse mesh's own unknowns: its Dirichlet vertices are not coarse unknowns.
       for (int v : given->free_to_full) {
@@ -151,7 +166,8 @@ MultigridPreconditioner::MultigridPreconditioner(const SparseMatrix& a,
       }
       if (ratio > options.max_last_coarse_ratio) break;
     }
-    Level& level = impl_->levels.back();
+    const std::size_t current = levels.size() - 1;
+    Level& level = levels[current];
     level.p = select_rows_and_columns(full, rows_kept, column_index,
                                       static_cast<Eigen::Index>(coarse_kept.size()));
     level.pt = level.p.transpose();
@@ -159,33 +175,37 @@ MultigridPreconditioner::MultigridPreconditioner(const SparseMatrix& a,
     if (given) {
       if (given->a.rows() != static_cast<Eigen::Index>(coarse_kept.size()))
         throw Error("multigrid: a coarse operator's size does not match its unknowns");
-      coarse.a = given->a;
+      coarse.owned = std::move(given->a);
     } else {
-      coarse.a = galerkin_product(level.pt, level.a, level.p);
+      coarse.owned = galerkin_product(level.pt, operator_of(current), level.p);
     }
-    coarse.a.makeCompressed();
-    impl_->levels.push_back(std::move(coarse));
+    coarse.owned.makeCompressed();
+    levels.push_back(std::move(coarse));
     rows_kept = std::move(coarse_kept);
   }
-  impl_->mesh_levels = impl_->levels.size();
+  impl_->mesh_levels = levels.size();
   // Below the mesh hierarchy: algebraic levels until a direct solve is cheap.
-  while (impl_->levels.back().a.rows() > options.max_direct_unknowns) {
-    Level& level = impl_->levels.back();
-    SparseMatrix p = smoothed_aggregation_prolongation(level.a, options.aggregation);
+  while (operator_of(levels.size() - 1).rows() > options.max_direct_unknowns) {
+    const std::size_t current = levels.size() - 1;
+    SparseMatrix p = smoothed_aggregation_prolongation(operator_of(current), options.aggregation);
     if (p.cols() == 0 || static_cast<double>(p.cols()) >
                              options.max_aggregation_ratio * static_cast<double>(p.rows()))
       break;
+    Level& level = levels[current];
     level.p = std::move(p);
     level.pt = level.p.transpose();
     Level coarse;
-    coarse.a = galerkin_product(level.pt, level.a, level.p);
-    coarse.a.makeCompressed();
-    impl_->levels.push_back(std::move(coarse));
+    coarse.owned = galerkin_product(level.pt, operator_of(current), level.p);
+    coarse.owned.makeCompressed();
+    levels.push_back(std::move(coarse));
   }
-  for (Level& level : impl_->levels)
-    level.smoother = make_gauss_seidel(level.a, options.smoothing_blocks);
+  // The level list is final: operators and smoothers can point into it now.
+  for (std::size_t l = 0; l < levels.size(); ++l) {
+    levels[l].a = &operator_of(l);
+    levels[l].smoother = make_gauss_seidel(*levels[l].a, options.smoothing_blocks);
+  }
 
-  const ColMajor coarsest(impl_->levels.back().a);
+  const ColMajor coarsest(*levels.back().a);
   impl_->coarse_solver.compute(coarsest);
   if (impl_->coarse_solver.info() != Eigen::Success && impl_->levels.size() > 1) {
     // Non-nested hierarchies can give linearly dependent coarse basis functions (after the
@@ -220,13 +240,13 @@ std::size_t MultigridPreconditioner::mesh_levels() const { return impl_->mesh_le
 std::vector<long> MultigridPreconditioner::level_nonzeros() const {
   std::vector<long> nonzeros;
   for (const Level& level : impl_->levels)
-    nonzeros.push_back(static_cast<long>(level.a.nonZeros()));
+    nonzeros.push_back(static_cast<long>(level.a->nonZeros()));
   return nonzeros;
 }
 
 std::vector<int> MultigridPreconditioner::level_sizes() const {
   std::vector<int> sizes;
-  for (const Level& level : impl_->levels) sizes.push_back(static_cast<int>(level.a.rows()));
+  for (const Level& level : impl_->levels) sizes.push_back(static_cast<int>(level.a->rows()));
   return sizes;
 }
 

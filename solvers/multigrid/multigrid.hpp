@@ -30,7 +30,7 @@ struct MultigridOptions {
   int smoothing_sweeps = 1;  // Gauss-Seidel sweeps before and after the coarse correction
   // Gauss-Seidel runs on this many row blocks in parallel (gauss_seidel.hpp). Results
   // depend on it, not on the thread count; 1 is the classic sequential smoother.
-  int smoothing_blocks = 4;
+  int smoothing_blocks = 2;
   // A coarse column whose largest remaining weight is below this is dropped (see above).
   double drop_column_below = 1e-6;
   // A hierarchy level with more than this fraction of the current level's unknowns is
@@ -63,11 +63,13 @@ class MultigridPreconditioner {
   // a: the fine operator on free unknowns; fine_free_to_full[i] = fine mesh vertex of
   // unknown i; prolongations[l] maps level l+1 vertices to level l vertices (all vertices,
   // as stored in Hierarchy::transfers[l].volume). An empty list gives algebraic multigrid.
-  // mesh_operators[l], when given, replaces the Galerkin operator of level l+1.
+  // mesh_operators[l], when given, replaces the Galerkin operator of level l+1 (moved in:
+  // they are the coarse levels' operators from then on).
+  // `a` is not copied: it must outlive the preconditioner (CG holds it anyway).
   MultigridPreconditioner(const SparseMatrix& a, std::span<const int> fine_free_to_full,
                           std::span<const SparseMatrix> prolongations,
                           const MultigridOptions& options = {},
-                          std::span<const MeshOperator> mesh_operators = {});
+                          std::vector<MeshOperator> mesh_operators = {});
   ~MultigridPreconditioner();
   MultigridPreconditioner(MultigridPreconditioner&&) noexcept;
   MultigridPreconditioner& operator=(MultigridPreconditioner&&) noexcept;

@@ -1,5 +1,8 @@
 #include "solvers/physics/poisson.hpp"
 
+#include <tbb/parallel_for.h>
+
+#include <chrono>
 #include <cmath>
 #include <numbers>
 #include <string>
@@ -26,11 +29,34 @@ double evaluate(const TetMesh& mesh, const Eigen::VectorXd& field, const PointLo
   return value;
 }
 
+std::vector<char> dirichlet_vertices(const TetMesh& mesh, const std::vector<int>& markers) {
+  const std::vector<unsigned> bits = boundary_vertex_marker_bits(mesh);
+  unsigned mask = 0;
+  for (int m : markers) {
+    if (m >= 0 && m <= 30) mask |= 1u << m;
+  }
+  std::vector<char> dirichlet(mesh.points.size(), 0);
+  for (std::size_t v = 0; v < dirichlet.size(); ++v) dirichlet[v] = (bits[v] & mask) != 0;
+  return dirichlet;
+}
+
+// The operator of one permittivity table on a coarse mesh, its Dirichlet vertices removed.
+MeshOperator coarse_operator(const TetMesh& mesh, std::span<const std::pair<int, double>> table,
+                             const std::vector<int>& dirichlet_markers) {
+  const SparseMatrix k = assemble_stiffness(mesh, cell_coefficients_by_region(mesh, table));
+  const auto n = static_cast<Eigen::Index>(mesh.points.size());
+  ReducedSystem reduced =
+      reduce_dirichlet(k, Eigen::VectorXd::Zero(n), dirichlet_vertices(mesh, dirichlet_markers),
+                       Eigen::VectorXd::Zero(n));
+  return {std::move(reduced.matrix), std::move(reduced.free_to_full)};
+}
+
 }  // namespace
 
 PoissonResult solve_solvation_energy(const TetMesh& mesh, const Atoms& atoms,
                                      std::span<const SparseMatrix> prolongations,
-                                     const PoissonOptions& options, const Reporter& reporter) {
+                                     const PoissonOptions& options, const Reporter& reporter,
+                                     std::span<const TetMesh* const> coarse_meshes) {
   if (!(options.pdie > 0.0) || !(options.sdie > 0.0)) {
     throw Error("Poisson: permittivities must be positive");
   }
@@ -68,18 +94,10 @@ PoissonResult solve_solvation_energy(const TetMesh& mesh, const Atoms& atoms,
     for (std::size_t a = 0; a < 4; ++a) load[tet[a]] += source_scale * c.q * c.where.barycentric[a];
   }
 
-  const std::vector<unsigned> bits = boundary_vertex_marker_bits(mesh);
-  unsigned mask = 0;
-  for (int m : options.dirichlet_markers) {
-    if (m >= 0 && m <= 30) mask |= 1u << m;
-  }
-  std::vector<char> dirichlet(nv, 0);
+  const std::vector<char> dirichlet = dirichlet_vertices(mesh, options.dirichlet_markers);
   std::vector<std::size_t> boundary;
   for (std::size_t v = 0; v < nv; ++v) {
-    if (bits[v] & mask) {
-      dirichlet[v] = 1;
-      boundary.push_back(v);
-    }
+    if (dirichlet[v]) boundary.push_back(v);
   }
   if (boundary.empty()) throw Error("Poisson: the mesh has no outer-sphere (Dirichlet) vertex");
   // Coulomb sum at boundary vertices, with unit permittivity; scaled per solve below.
@@ -101,8 +119,23 @@ PoissonResult solve_solvation_energy(const TetMesh& mesh, const Atoms& atoms,
     const Eigen::VectorXd values = coulomb / outside;
     const ReducedSystem system = reduce_dirichlet(k, load, dirichlet, values);
     result.unknowns = static_cast<int>(system.free_to_full.size());
+    // Coarse operators are part of the multigrid setup: timed and counted there.
+    const auto coarse_start = std::chrono::steady_clock::now();
+    std::vector<MeshOperator> mesh_operators(coarse_meshes.size());
+    if (options.solver.preconditioning == Preconditioning::kMultigrid) {
+      for (const TetMesh* coarse : coarse_meshes)
+        if (coarse == nullptr) throw Error("Poisson: a coarse level has no mesh");
+      tbb::parallel_for(std::size_t{0}, coarse_meshes.size(), [&](std::size_t l) {
+        mesh_operators[l] = coarse_operator(*coarse_meshes[l], table, options.dirichlet_markers);
+      });
+    } else {
+      mesh_operators.clear();
+    }
+    const double coarse_seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - coarse_start).count();
     Eigen::VectorXd x;
-    report = solve_reduced(system, prolongations, options.solver, x);
+    report = solve_reduced(system, prolongations, options.solver, x, std::move(mesh_operators));
+    report.setup_time_s += coarse_seconds;
     if (!report.converged) {
       reporter.warn(std::string(stage) + ": CG stopped at relative residual " +
                     std::to_string(report.relative_residual));

@@ -41,10 +41,15 @@ struct PoissonResult {
 };
 
 // mesh: a full mesh (molecule and solvent regions) containing every charged atom.
+// prolongations: Hierarchy::transfers[l].volume for the levels below `mesh` (may be empty).
+// coarse_meshes: one per prolongation to use coarse operators discretised on those meshes
+// (same regions and outer-sphere markers) instead of Galerkin products (empty: Galerkin).
+// Only operators are needed there: the charges load the finest level alone.
 // Throws molmesh::Error when a charge lies outside the mesh or the mesh has no Dirichlet
 // (outer sphere) vertex.
 PoissonResult solve_solvation_energy(const TetMesh& mesh, const Atoms& atoms,
                                      std::span<const SparseMatrix> prolongations,
-                                     const PoissonOptions& options, const Reporter& reporter = {});
+                                     const PoissonOptions& options, const Reporter& reporter = {},
+                                     std::span<const TetMesh* const> coarse_meshes = {});
 
 }  // namespace molmesh::solvers

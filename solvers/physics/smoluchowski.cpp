@@ -177,7 +177,7 @@ SmoluchowskiResult solve_smoluchowski(const TetMesh& mesh, std::span<const doubl
   Eigen::VectorXd x;
   const double coarse_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - coarse_start).count();
-  result.solve = solve_reduced(system, prolongations, options.solver, x, mesh_operators);
+  result.solve = solve_reduced(system, prolongations, options.solver, x, std::move(mesh_operators));
   result.solve.setup_time_s += coarse_seconds;
   reporter.progress("smoluchowski: solve", 1.0);
   if (!result.solve.converged) {

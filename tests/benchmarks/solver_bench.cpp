@@ -71,13 +71,19 @@ const Hierarchy& mache() {
   return h;
 }
 
-void run_mache(benchmark::State& state, solvers::Preconditioning p, bool mesh_operators = false) {
+// smoothing: take (sweeps, blocks) from the benchmark arguments instead of the defaults.
+void run_mache(benchmark::State& state, solvers::Preconditioning p, bool mesh_operators = false,
+               bool smoothing = false) {
   const Hierarchy& h = mache();
   std::vector<SparseMatrix> prolongations;
   for (const auto& t : h.transfers) prolongations.push_back(t.volume);
   solvers::SmoluchowskiOptions options;
   options.absorbing_markers = {markers::kActiveSite};
   options.solver.preconditioning = p;
+  if (smoothing) {
+    options.solver.multigrid.smoothing_sweeps = static_cast<int>(state.range(0));
+    options.solver.multigrid.smoothing_blocks = static_cast<int>(state.range(1));
+  }
   std::vector<solvers::CoarseLevel> coarse;
   if (mesh_operators)
     for (std::size_t l = 1; l < h.levels.size(); ++l) coarse.push_back({&h.levels[l].volume, {}});
@@ -92,11 +98,17 @@ void run_mache(benchmark::State& state, solvers::Preconditioning p, bool mesh_op
   state.counters["cg_ms"] = 1e3 * r.solve.solve_time_s;
 }
 
+// The CLI's default: coarse operators discretised on the coarse meshes.
 void BM_MacheMultigridPCG(benchmark::State& state) {
+  run_mache(state, solvers::Preconditioning::kMultigrid, true);
+}
+// Galerkin coarse operators P^T A P (`--coarse-operators galerkin`).
+void BM_MacheMultigridPCGGalerkin(benchmark::State& state) {
   run_mache(state, solvers::Preconditioning::kMultigrid);
 }
-void BM_MacheMultigridPCGMeshOperators(benchmark::State& state) {
-  run_mache(state, solvers::Preconditioning::kMultigrid, true);
+// The smoother's trade-off: Gauss-Seidel sweeps per side against row blocks in parallel.
+void BM_MacheSmoothing(benchmark::State& state) {
+  run_mache(state, solvers::Preconditioning::kMultigrid, true, true);
 }
 void BM_MacheIncompleteCholeskyPCG(benchmark::State& state) {
   run_mache(state, solvers::Preconditioning::kIncompleteCholesky);
@@ -113,8 +125,16 @@ void BM_AssembleMacheFine(benchmark::State& state) {
 
 BENCHMARK(BM_AssembleMacheFine)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_MacheMultigridPCG)->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_MacheMultigridPCGMeshOperators)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_MacheMultigridPCGGalerkin)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_MacheIncompleteCholeskyPCG)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_MacheSmoothing)
+    ->ArgNames({"sweeps", "blocks"})
+    ->Args({1, 1})
+    ->Args({1, 2})
+    ->Args({1, 4})
+    ->Args({2, 1})
+    ->Args({2, 2})
+    ->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_MultigridPCG)->DenseRange(3, 5)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_IncompleteCholeskyPCG)->DenseRange(3, 5)->Unit(benchmark::kMillisecond);
 

@@ -45,6 +45,39 @@ TEST(Poisson, BornIonSolvationEnergy) {
               0.02 * units::kCoulombKjAngstromPerMol / radius);
 }
 
+// Coarse operators discretised on the coarse meshes (their own regions and outer sphere)
+// precondition the same fine system: the same energy, a mesh-stencil hierarchy.
+TEST(Poisson, CoarseOperatorsFromTheCoarseMeshesGiveTheSameEnergy) {
+  const auto h = test::make_shell_hierarchy({.inner_radius = 3.0,
+                                             .outer_radius = 15.0,
+                                             .subdivisions = 4,
+                                             .radial_layers = 8,
+                                             .ball_layers = 4},
+                                            4);
+  Atom ion;
+  ion.charge = 1.0;
+  ion.radius = 3.0;
+  const auto galerkin = solve_solvation_energy(h.meshes[0].mesh, {ion}, h.prolongations, {});
+  std::vector<const TetMesh*> coarse;
+  for (std::size_t l = 1; l < h.meshes.size(); ++l) coarse.push_back(&h.meshes[l].mesh);
+  const auto mesh =
+      solve_solvation_energy(h.meshes[0].mesh, {ion}, h.prolongations, {}, {}, coarse);
+  std::printf("Born with mesh coarse operators: %d + %d iterations (Galerkin %d + %d)\n",
+              mesh.solvated.iterations, mesh.reference.iterations, galerkin.solvated.iterations,
+              galerkin.reference.iterations);
+  EXPECT_TRUE(mesh.solvated.converged);
+  EXPECT_TRUE(mesh.reference.converged);
+  // As strong a preconditioner as the Galerkin one on this nested hierarchy.
+  EXPECT_LE(mesh.solvated.iterations, galerkin.solvated.iterations + 5);
+  EXPECT_EQ(mesh.solvated.mesh_levels, 4);
+  EXPECT_NE(mesh.solvated.preconditioner.find("re-discretised"), std::string::npos);
+  EXPECT_NEAR(mesh.solvation_energy_kj_per_mol / galerkin.solvation_energy_kj_per_mol, 1.0, 1e-6);
+  for (std::size_t l = 1; l < mesh.solvated.level_nonzeros.size() &&
+                          l < static_cast<std::size_t>(mesh.solvated.mesh_levels);
+       ++l)
+    EXPECT_LE(mesh.solvated.level_nonzeros[l], galerkin.solvated.level_nonzeros[l]);
+}
+
 TEST(Poisson, ChargeOutsideTheMeshIsAnError) {
   const auto shell = test::make_shell_mesh({.inner_radius = 3.0,
                                             .outer_radius = 10.0,

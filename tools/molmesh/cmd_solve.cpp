@@ -32,7 +32,9 @@ struct CommonArgs {
   std::string preconditioner = "multigrid";
   double tolerance = 1e-8;
   int max_iterations = 2000;
-  int sweeps = 2;
+  int sweeps = solvers::MultigridOptions{}.smoothing_sweeps;
+  int blocks = solvers::MultigridOptions{}.smoothing_blocks;
+  std::string coarse_operators = "mesh";
   std::string json;
   bool no_fields = false;
 };
@@ -43,7 +45,6 @@ struct SmoluchowskiArgs {
   std::string absorbing = "surface";
   std::string potential;
   double charge = 1.0;
-  std::string coarse_operators = "galerkin";
 };
 
 struct PoissonArgs {
@@ -67,7 +68,7 @@ void add_common(CLI::App* cmd, CommonArgs& a) {
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
   cmd->add_option("--preconditioner", a.preconditioner,
-                  "multigrid (V-cycle over the hierarchy, Galerkin coarse operators) or ic "
+                  "multigrid (V-cycle over the hierarchy, see --coarse-operators) or ic "
                   "(incomplete Cholesky, the baseline)")
       ->check(CLI::IsMember({"multigrid", "ic"}))
       ->capture_default_str();
@@ -81,6 +82,17 @@ void add_common(CLI::App* cmd, CommonArgs& a) {
                   "Gauss-Seidel sweeps before and after each coarse correction")
       ->check(CLI::Range(1, 10))
       ->capture_default_str();
+  cmd->add_option("--smoothing-blocks", a.blocks,
+                  "Gauss-Seidel runs on this many row blocks in parallel (Jacobi between blocks); "
+                  "results depend on it, not on the thread count; 1 = sequential")
+      ->check(CLI::Range(1, 256))
+      ->capture_default_str();
+  cmd->add_option("--coarse-operators", a.coarse_operators,
+                  "Multigrid coarse operators: mesh (discretised on each coarse mesh; fast) or "
+                  "galerkin (P^T A P: the exact projection, but on a non-nested hierarchy its "
+                  "stencil widens level by level and the setup becomes slower than the solve)")
+      ->check(CLI::IsMember({"galerkin", "mesh"}))
+      ->capture_default_str();
   cmd->add_option("--json", a.json,
                   "Write the results (and solver report with residual history) as JSON");
   cmd->add_flag("--no-fields", a.no_fields,
@@ -91,6 +103,18 @@ struct Loaded {
   Hierarchy hierarchy;
   std::vector<SparseMatrix> prolongations;
 };
+
+bool uses_coarse_meshes(const CommonArgs& a) {
+  return a.coarse_operators == "mesh" && a.preconditioner == "multigrid";
+}
+
+// The coarse meshes below the solve level, one per prolongation used.
+std::vector<const TetMesh*> coarse_meshes(const CommonArgs& a, const Loaded& loaded) {
+  std::vector<const TetMesh*> meshes;
+  for (std::size_t l = 0; l < loaded.prolongations.size(); ++l)
+    meshes.push_back(&loaded.hierarchy.levels[static_cast<std::size_t>(a.level) + l + 1].volume);
+  return meshes;
+}
 
 Loaded load(const CommonArgs& a) {
   Loaded out;
@@ -116,6 +140,7 @@ solvers::LinearSolverOptions solver_options(const CommonArgs& a) {
   o.cg.tolerance = a.tolerance;
   o.cg.max_iterations = a.max_iterations;
   o.multigrid.smoothing_sweeps = a.sweeps;
+  o.multigrid.smoothing_blocks = a.blocks;
   return o;
 }
 
@@ -183,13 +208,11 @@ void run_smoluchowski(const SmoluchowskiArgs& args, const CliContext& ctx) {
   // the potential interpolated to its vertices the same way.
   std::vector<std::vector<double>> coarse_beta_w;
   std::vector<solvers::CoarseLevel> coarse_levels;
-  if (args.coarse_operators == "mesh" && args.common.preconditioner == "multigrid") {
+  if (uses_coarse_meshes(args.common)) {
     coarse_beta_w.reserve(loaded.prolongations.size());  // coarse_levels point into it
-    for (std::size_t l = 0; l < loaded.prolongations.size(); ++l) {
-      const TetMesh& coarse =
-          loaded.hierarchy.levels[static_cast<std::size_t>(args.common.level) + l + 1].volume;
-      coarse_beta_w.push_back(beta_w_at(coarse, nullptr));
-      coarse_levels.push_back({&coarse, coarse_beta_w.back()});
+    for (const TetMesh* coarse : coarse_meshes(args.common, loaded)) {
+      coarse_beta_w.push_back(beta_w_at(*coarse, nullptr));
+      coarse_levels.push_back({coarse, coarse_beta_w.back()});
     }
   }
   const auto result = solvers::solve_smoluchowski(mesh, beta_w, loaded.prolongations, options,
@@ -208,7 +231,7 @@ void run_smoluchowski(const SmoluchowskiArgs& args, const CliContext& ctx) {
   j["tetrahedra"] = mesh.tetrahedra.size();
   j["unknowns"] = result.unknowns;
   j["absorbing"] = args.absorbing;
-  j["coarse_operators"] = args.coarse_operators;
+  j["coarse_operators"] = args.common.coarse_operators;
   j["absorbing_vertices"] = result.absorbing_vertices;
   j["bulk_vertices"] = result.bulk_vertices;
   j["isolated_cavity_vertices"] = result.isolated_vertices;
@@ -237,8 +260,11 @@ void run_poisson(const PoissonArgs& args, const CliContext& ctx) {
   options.pdie = args.pdie;
   options.sdie = args.sdie;
   options.solver = solver_options(args.common);
+  const std::vector<const TetMesh*> coarse = uses_coarse_meshes(args.common)
+                                                 ? coarse_meshes(args.common, loaded)
+                                                 : std::vector<const TetMesh*>{};
   const auto result =
-      solvers::solve_solvation_energy(mesh, atoms, loaded.prolongations, options, reporter);
+      solvers::solve_solvation_energy(mesh, atoms, loaded.prolongations, options, reporter, coarse);
   store_field(args.common, "potential_kJ_per_mol_e", result.potential);
   store_field(args.common, "reaction_potential_kJ_per_mol_e", result.reaction_potential);
   nlohmann::json j = report_json(result.solvated);
@@ -251,6 +277,7 @@ void run_poisson(const PoissonArgs& args, const CliContext& ctx) {
   j["pqr"] = args.pqr;
   j["pdie"] = args.pdie;
   j["sdie"] = args.sdie;
+  j["coarse_operators"] = args.common.coarse_operators;
   j["charges"] = result.charges;
   j["max_charge_offset_A"] = result.max_charge_offset;
   j["reference_solve"] = report_json(result.reference);
@@ -307,11 +334,6 @@ const CommandRegistration registration{
           ->check(CLI::ExistingFile);
       s->add_option("--charge", smol->charge,
                     "Charge z of the diffusing ligand: beta W = z * phi (used with --potential)")
-          ->capture_default_str();
-      s->add_option("--coarse-operators", smol->coarse_operators,
-                    "Multigrid coarse operators: galerkin (P^T A P, exact but its stencil widens "
-                    "on a non-nested hierarchy) or mesh (discretised on each coarse mesh)")
-          ->check(CLI::IsMember({"galerkin", "mesh"}))
           ->capture_default_str();
       s->callback([smol, &ctx] { run_smoluchowski(*smol, ctx); });
 
