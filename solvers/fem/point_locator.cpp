@@ -1,106 +1,88 @@
 #include "solvers/fem/point_locator.hpp"
 
-#include <Eigen/LU>
 #include <algorithm>
+#include <boost/geometry.hpp>
+#include <boost/geometry/index/rtree.hpp>
 #include <cmath>
+#include <iterator>
+#include <utility>
+#include <vector>
 
 namespace molmesh::solvers {
 
+namespace bg = boost::geometry;
+namespace bgi = boost::geometry::index;
+using Point = bg::model::point<double, 3, bg::cs::cartesian>;
+using Box = bg::model::box<Point>;
+using Entry = std::pair<Box, int>;  // a cell's bounding box and its index
+
+struct PointLocator::Index {
+  bgi::rtree<Entry, bgi::rstar<16>> tree;
+  double tolerance = 0.0;  // how far outside a box a point may lie and still be tested
+};
+
 namespace {
 
+// Barycentric coordinates from the inverse Jacobian (rows: the gradients of the last three
+// coordinates), as the P1 assembly computes them.
 std::array<double, 4> barycentric(const TetMesh& mesh, const Tetrahedron& tet, const Vec3& p) {
   const Vec3& a = mesh.points[static_cast<std::size_t>(tet[0])];
-  Eigen::Matrix3d m;
-  m.col(0) = mesh.points[static_cast<std::size_t>(tet[1])] - a;
-  m.col(1) = mesh.points[static_cast<std::size_t>(tet[2])] - a;
-  m.col(2) = mesh.points[static_cast<std::size_t>(tet[3])] - a;
-  const Vec3 l = m.partialPivLu().solve(p - a);
-  return {1.0 - l.sum(), l[0], l[1], l[2]};
+  const Vec3 e1 = mesh.points[static_cast<std::size_t>(tet[1])] - a;
+  const Vec3 e2 = mesh.points[static_cast<std::size_t>(tet[2])] - a;
+  const Vec3 e3 = mesh.points[static_cast<std::size_t>(tet[3])] - a;
+  const double det = e1.dot(e2.cross(e3));
+  const Vec3 d = p - a;
+  const double l1 = e2.cross(e3).dot(d) / det;
+  const double l2 = e3.cross(e1).dot(d) / det;
+  const double l3 = e1.cross(e2).dot(d) / det;
+  return {1.0 - l1 - l2 - l3, l1, l2, l3};
 }
 
 }  // namespace
 
-PointLocator::PointLocator(const TetMesh& mesh) : mesh_(&mesh) {
-  const std::size_t nt = mesh.tetrahedra.size();
-  if (nt == 0) return;
-  Vec3 lo = Vec3::Constant(1e300), hi = Vec3::Constant(-1e300);
-  for (const Vec3& p : mesh.points) {
-    lo = lo.cwiseMin(p);
-    hi = hi.cwiseMax(p);
-  }
-  const Vec3 extent = (hi - lo).cwiseMax(1e-9);
-  // About two cells per bucket on average keeps both the lists and the scan short.
-  const double volume = extent.prod();
-  cell_ = std::cbrt(2.0 * volume / static_cast<double>(nt));
-  lower_ = lo;
-  for (int d = 0; d < 3; ++d) {
-    dims_[static_cast<std::size_t>(d)] =
-        std::clamp(static_cast<int>(std::ceil(extent[d] / cell_)), 1, 1024);
-  }
-  const std::size_t nb =
-      static_cast<std::size_t>(dims_[0]) * static_cast<std::size_t>(dims_[1]) * dims_[2];
-  auto bucket_range = [&](const Tetrahedron& tet, std::array<int, 3>& b0, std::array<int, 3>& b1) {
-    Vec3 tlo = mesh.points[static_cast<std::size_t>(tet[0])], thi = tlo;
+PointLocator::PointLocator(const TetMesh& mesh) : mesh_(&mesh), index_(std::make_unique<Index>()) {
+  std::vector<Entry> boxes;
+  boxes.reserve(mesh.tetrahedra.size());
+  double extent = 0.0;
+  for (std::size_t t = 0; t < mesh.tetrahedra.size(); ++t) {
+    const Tetrahedron& tet = mesh.tetrahedra[t];
+    Vec3 lo = mesh.points[static_cast<std::size_t>(tet[0])], hi = lo;
     for (int v : tet) {
-      tlo = tlo.cwiseMin(mesh.points[static_cast<std::size_t>(v)]);
-      thi = thi.cwiseMax(mesh.points[static_cast<std::size_t>(v)]);
+      lo = lo.cwiseMin(mesh.points[static_cast<std::size_t>(v)]);
+      hi = hi.cwiseMax(mesh.points[static_cast<std::size_t>(v)]);
     }
-    for (int d = 0; d < 3; ++d) {
-      const auto du = static_cast<std::size_t>(d);
-      b0[du] = std::clamp(static_cast<int>((tlo[d] - lower_[d]) / cell_), 0, dims_[du] - 1);
-      b1[du] = std::clamp(static_cast<int>((thi[d] - lower_[d]) / cell_), 0, dims_[du] - 1);
-    }
-  };
-  auto index = [&](int i, int j, int k) {
-    return static_cast<std::size_t>(i) +
-           static_cast<std::size_t>(dims_[0]) *
-               (static_cast<std::size_t>(j) + static_cast<std::size_t>(dims_[1]) * k);
-  };
-  std::vector<int> count(nb + 1, 0);
-  std::array<int, 3> b0{}, b1{};
-  for (const Tetrahedron& tet : mesh.tetrahedra) {
-    bucket_range(tet, b0, b1);
-    for (int k = b0[2]; k <= b1[2]; ++k)
-      for (int j = b0[1]; j <= b1[1]; ++j)
-        for (int i = b0[0]; i <= b1[0]; ++i) ++count[index(i, j, k) + 1];
+    extent = std::max(extent, (hi - lo).maxCoeff());
+    boxes.emplace_back(Box(Point(lo.x(), lo.y(), lo.z()), Point(hi.x(), hi.y(), hi.z())),
+                       static_cast<int>(t));
   }
-  for (std::size_t b = 0; b < nb; ++b) count[b + 1] += count[b];
-  start_ = count;
-  cells_.resize(static_cast<std::size_t>(count[nb]));
-  std::vector<int> fill(count.begin(), count.end() - 1);
-  for (std::size_t t = 0; t < nt; ++t) {
-    bucket_range(mesh.tetrahedra[t], b0, b1);
-    for (int k = b0[2]; k <= b1[2]; ++k)
-      for (int j = b0[1]; j <= b1[1]; ++j)
-        for (int i = b0[0]; i <= b1[0]; ++i)
-          cells_[static_cast<std::size_t>(fill[index(i, j, k)]++)] = static_cast<int>(t);
-  }
+  index_->tolerance = 1e-9 * std::max(extent, 1.0);
+  // The range constructor bulk-loads (packing): faster to build and to query than inserts.
+  index_->tree = bgi::rtree<Entry, bgi::rstar<16>>(boxes.begin(), boxes.end());
 }
 
+PointLocator::~PointLocator() = default;
+PointLocator::PointLocator(PointLocator&&) noexcept = default;
+PointLocator& PointLocator::operator=(PointLocator&&) noexcept = default;
+
 std::optional<PointLocation> PointLocator::locate(const Vec3& p) const {
-  if (start_.empty()) return std::nullopt;
-  std::array<int, 3> b{};
-  for (int d = 0; d < 3; ++d) {
-    const double f = (p[d] - lower_[d]) / cell_;
-    const auto du = static_cast<std::size_t>(d);
-    if (f < -1.0 || f > dims_[du] + 1.0) return std::nullopt;
-    b[du] = std::clamp(static_cast<int>(f), 0, dims_[du] - 1);
-  }
-  const std::size_t bucket =
-      static_cast<std::size_t>(b[0]) +
-      static_cast<std::size_t>(dims_[0]) *
-          (static_cast<std::size_t>(b[1]) + static_cast<std::size_t>(dims_[1]) * b[2]);
+  const double e = index_->tolerance;
+  const Box probe(Point(p.x() - e, p.y() - e, p.z() - e), Point(p.x() + e, p.y() + e, p.z() + e));
+  std::vector<Entry> candidates;
+  index_->tree.query(bgi::intersects(probe), std::back_inserter(candidates));
   // Keep the cell whose smallest barycentric coordinate is largest: the containing one,
-  // robust to rounding for points on faces and vertices.
+  // robust to rounding for points on faces and vertices. Ties go to the lowest cell index,
+  // so the answer does not depend on the tree's internal order.
+  std::sort(candidates.begin(), candidates.end(),
+            [](const Entry& x, const Entry& y) { return x.second < y.second; });
   PointLocation best;
   double best_min = -1e300;
-  for (int c = start_[bucket]; c < start_[bucket + 1]; ++c) {
-    const auto t = static_cast<std::size_t>(cells_[static_cast<std::size_t>(c)]);
+  for (const Entry& candidate : candidates) {
+    const auto t = static_cast<std::size_t>(candidate.second);
     const auto l = barycentric(*mesh_, mesh_->tetrahedra[t], p);
     const double m = std::min(std::min(l[0], l[1]), std::min(l[2], l[3]));
     if (m > best_min) {
       best_min = m;
-      best.tetrahedron = static_cast<int>(t);
+      best.tetrahedron = candidate.second;
       best.barycentric = l;
     }
   }

@@ -113,6 +113,28 @@ TEST(PointLocator, FindsContainingCellsAndInterpolatesLinearsExactly) {
   EXPECT_FALSE(locator.locate(Vec3(7.0, 0, 0)).has_value());
 }
 
+// Charges sit on mesh vertices (atom centres), shared by many cells: every vertex of a
+// strongly graded mesh (geometric layers, cells 40x larger outside than inside) is found,
+// with weight 1 on itself.
+TEST(PointLocator, FindsEveryVertexOfAGradedMesh) {
+  const auto shell = test::make_shell_mesh({.inner_radius = 1.0,
+                                            .outer_radius = 40.0,
+                                            .subdivisions = 2,
+                                            .radial_layers = 12,
+                                            .ball_layers = 2});
+  const PointLocator locator(shell.mesh);
+  for (std::size_t v = 0; v < shell.mesh.points.size(); ++v) {
+    const auto at = locator.locate(shell.mesh.points[v]);
+    ASSERT_TRUE(at.has_value()) << "vertex " << v;
+    const Tetrahedron& tet = shell.mesh.tetrahedra[static_cast<std::size_t>(at->tetrahedron)];
+    double own = 0.0;
+    for (std::size_t a = 0; a < 4; ++a) {
+      if (static_cast<std::size_t>(tet[a]) == v) own = at->barycentric[a];
+    }
+    EXPECT_NEAR(own, 1.0, 1e-9) << "vertex " << v;
+  }
+}
+
 // Dirichlet on both spheres with the exact values of u = 1 + 10/r. Returns the root mean
 // square nodal error (the maximum goes to max_error); h is the longest edge.
 double shell_laplace_error(int refinement, double& h, double& max_error) {
