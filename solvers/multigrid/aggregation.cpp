@@ -1,5 +1,6 @@
 #include "solvers/multigrid/aggregation.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -17,6 +18,9 @@ StrongGraph strong_graph(const SparseMatrix& a, const Eigen::VectorXd& diagonal,
   StrongGraph g;
   const auto n = a.rows();
   g.start.reserve(static_cast<std::size_t>(n) + 1);
+  // Upper bounds: reserved pages that are never written are never touched.
+  g.neighbour.reserve(static_cast<std::size_t>(a.nonZeros()));
+  g.weight.reserve(static_cast<std::size_t>(a.nonZeros()));
   g.start.push_back(0);
   for (Eigen::Index i = 0; i < n; ++i) {
     for (SparseMatrix::InnerIterator it(a, i); it; ++it) {
@@ -92,17 +96,20 @@ SparseMatrix smoothed_aggregation_prolongation(const SparseMatrix& a,
                                                const AggregationOptions& options) {
   const Eigen::VectorXd diagonal = a.diagonal();
   const StrongGraph graph = strong_graph(a, diagonal, options.strength_threshold);
-  int count = 0;
-  const std::vector<int> agg = aggregate(graph, count);
-  SparseMatrix p(a.rows(), count);
-  if (count == 0) return p;
+  int aggregates = 0;
+  const std::vector<int> agg = aggregate(graph, aggregates);
+  SparseMatrix p(a.rows(), aggregates);
+  if (aggregates == 0) return p;
 
   const double omega = options.relaxation / spectral_radius_bound(a, diagonal);
   // Row i of (I - ω D^-1 A) T: T's 1 at agg(i), minus ω a_ij / a_ii at agg(j) for every j.
-  std::vector<Eigen::Triplet<double, int>> triplets;
-  triplets.reserve(static_cast<std::size_t>(a.nonZeros()));
-  std::vector<double> row_value(static_cast<std::size_t>(count), 0.0);
-  std::vector<Eigen::Index> row_of_value(static_cast<std::size_t>(count), -1);
+  // Written row by row straight into p (a row has at most 1 + nnz(A row i) entries).
+  p.resizeNonZeros(a.nonZeros() + a.rows());
+  int* outer = p.outerIndexPtr();
+  int count = 0;
+  outer[0] = 0;
+  std::vector<double> row_value(static_cast<std::size_t>(aggregates), 0.0);
+  std::vector<Eigen::Index> row_of_value(static_cast<std::size_t>(aggregates), -1);
   std::vector<int> row_columns;
   for (Eigen::Index i = 0; i < a.rows(); ++i) {
     row_columns.clear();
@@ -119,11 +126,17 @@ SparseMatrix smoothed_aggregation_prolongation(const SparseMatrix& a,
       const int column = agg[it.col()];
       if (column >= 0) add(column, -omega * it.value() / diagonal[i]);
     }
-    for (int column : row_columns)
-      if (row_value[column] != 0.0)
-        triplets.emplace_back(static_cast<int>(i), column, row_value[column]);
+    std::sort(row_columns.begin(), row_columns.end());
+    for (int column : row_columns) {
+      if (row_value[column] != 0.0) {
+        p.innerIndexPtr()[count] = column;
+        p.valuePtr()[count] = row_value[column];
+        ++count;
+      }
+    }
+    outer[i + 1] = count;
   }
-  p.setFromTriplets(triplets.begin(), triplets.end());
+  p.resizeNonZeros(count);
   return p;
 }
 
