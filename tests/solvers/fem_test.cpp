@@ -15,12 +15,17 @@
 namespace molmesh::solvers {
 namespace {
 
+// A ball of radius 3 inside a shell to 9: both regions, a few thousand cells.
+test::ShellMesh small_ball_and_shell() {
+  return test::make_shell_mesh({.inner_radius = 3.0,
+                                .outer_radius = 9.0,
+                                .subdivisions = 2,
+                                .radial_layers = 3,
+                                .ball_layers = 2});
+}
+
 TEST(P1Assembly, StiffnessIsSymmetricAnnihilatesConstantsAndGivesExactEnergyOfLinears) {
-  const auto shell = test::make_shell_mesh({.inner_radius = 3.0,
-                                            .outer_radius = 9.0,
-                                            .subdivisions = 2,
-                                            .radial_layers = 3,
-                                            .ball_layers = 2});
+  const auto shell = small_ball_and_shell();
   const TetMesh& m = shell.mesh;
   double volume = 0.0;
   for (std::size_t t = 0; t < m.tetrahedra.size(); ++t) {
@@ -44,11 +49,7 @@ TEST(P1Assembly, StiffnessIsSymmetricAnnihilatesConstantsAndGivesExactEnergyOfLi
 
 // The row-wise gather must give exactly the matrix of the textbook cell-by-cell scatter.
 TEST(P1Assembly, RowGatherEqualsCellByCellScatter) {
-  const auto shell = test::make_shell_mesh({.inner_radius = 3.0,
-                                            .outer_radius = 9.0,
-                                            .subdivisions = 2,
-                                            .radial_layers = 3,
-                                            .ball_layers = 2});
+  const auto shell = small_ball_and_shell();
   const TetMesh& m = shell.mesh;
   std::vector<double> coefficient(m.tetrahedra.size());
   for (std::size_t t = 0; t < coefficient.size(); ++t) coefficient[t] = 1.0 + 0.1 * double(t % 7);

@@ -28,16 +28,7 @@ SurfaceMesh parse_obj(std::string_view text, const std::string& name) {
     const std::size_t n = lines.line_number();
     if (f[0] == "v") {
       if (f.size() < 4) throw InputError(name, n, "vertex needs 'v x y z'");
-      Vec3 p;
-      for (int k = 0; k < 3; ++k) {
-        const auto v = parse_double(f[static_cast<std::size_t>(k + 1)]);
-        if (!v || !std::isfinite(*v))
-          throw InputError(name, n,
-                           "coordinate '" + std::string(f[static_cast<std::size_t>(k + 1)]) +
-                               "' is not a finite number");
-        p[k] = *v;
-      }
-      mesh.points.push_back(p);
+      mesh.points.push_back(parse_point(f, 1, name, n));
     } else if (f[0] == "f") {
       corners.clear();
       for (std::size_t i = 1; i < f.size(); ++i) {
@@ -75,28 +66,17 @@ SurfaceMesh parse_obj(std::string_view text, const std::string& name) {
 }
 
 void write_obj(std::ostream& out, const SurfaceMesh& mesh) {
-  using io_detail::append_number;
   std::string text = "# written by molmesh\n";
   for (const Vec3& p : mesh.points) {
     text += "v ";
-    append_number(text, p.x());
-    text += ' ';
-    append_number(text, p.y());
-    text += ' ';
-    append_number(text, p.z());
+    io_detail::append_point(text, p);
     text += '\n';
-    if (text.size() > (1 << 20)) {
-      out << text;
-      text.clear();
-    }
+    io_detail::flush_when_large(out, text);
   }
   for (const Triangle& t : mesh.triangles) {
     text += "f " + std::to_string(t[0] + 1) + " " + std::to_string(t[1] + 1) + " " +
             std::to_string(t[2] + 1) + "\n";
-    if (text.size() > (1 << 20)) {
-      out << text;
-      text.clear();
-    }
+    io_detail::flush_when_large(out, text);
   }
   out << text;
 }

@@ -65,16 +65,7 @@ SurfaceMesh parse_off(std::string_view text, const std::string& name) {
           name, lines.line_number(),
           "file ends after " + std::to_string(i) + " of " + std::to_string(nv) + " vertices");
     if (fields.size() < 3) throw InputError(name, lines.line_number(), "expected 'x y z'");
-    Vec3 p;
-    for (int k = 0; k < 3; ++k) {
-      const auto v = parse_double(fields[static_cast<std::size_t>(k)]);
-      if (!v || !std::isfinite(*v))
-        throw InputError(name, lines.line_number(),
-                         "coordinate '" + std::string(fields[static_cast<std::size_t>(k)]) +
-                             "' is not a finite number");
-      p[k] = *v;
-    }
-    mesh.points.push_back(p);
+    mesh.points.push_back(parse_point(fields, 0, name, lines.line_number()));
   }
   std::vector<long long> corners;
   for (std::size_t f = 0; f < nf; ++f) {
@@ -106,24 +97,14 @@ void write_off(std::ostream& out, const SurfaceMesh& mesh) {
   std::string text = "OFF\n" + std::to_string(mesh.points.size()) + " " +
                      std::to_string(mesh.triangles.size()) + " 0\n";
   for (const Vec3& p : mesh.points) {
-    append_number(text, p.x());
-    text += ' ';
-    append_number(text, p.y());
-    text += ' ';
-    append_number(text, p.z());
+    append_point(text, p);
     text += '\n';
-    if (text.size() > (1 << 20)) {
-      out << text;
-      text.clear();
-    }
+    flush_when_large(out, text);
   }
   for (const Triangle& t : mesh.triangles) {
     text += "3 " + std::to_string(t[0]) + " " + std::to_string(t[1]) + " " + std::to_string(t[2]) +
             "\n";
-    if (text.size() > (1 << 20)) {
-      out << text;
-      text.clear();
-    }
+    flush_when_large(out, text);
   }
   out << text;
 }

@@ -82,16 +82,7 @@ SurfaceMesh parse_ascii(const std::string& text, const std::string& name) {
     } else if (f[0] == "vertex") {
       if (facet_line == 0) throw InputError(name, n, "'vertex' outside a facet");
       if (f.size() != 4) throw InputError(name, n, "expected 'vertex x y z'");
-      Vec3 p;
-      for (int k = 0; k < 3; ++k) {
-        const auto v = parse_double(f[static_cast<std::size_t>(k + 1)]);
-        if (!v || !std::isfinite(*v))
-          throw InputError(name, n,
-                           "coordinate '" + std::string(f[static_cast<std::size_t>(k + 1)]) +
-                               "' is not a finite number");
-        p[k] = *v;
-      }
-      corners.push_back(merger.add(p));
+      corners.push_back(merger.add(parse_point(f, 1, name, n)));
     } else if (f[0] == "endfacet") {
       if (facet_line == 0) throw InputError(name, n, "'endfacet' without 'facet'");
       if (corners.size() != 3)

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cctype>
 #include <charconv>
+#include <cmath>
 #include <fstream>
 #include <iterator>
 
@@ -127,6 +128,35 @@ void append_number(std::string& out, double value) {
   char buffer[64];
   const auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, value);
   out.append(buffer, ec == std::errc() ? end : buffer);
+}
+
+void append_point(std::string& out, const Vec3& p) {
+  append_number(out, p.x());
+  out += ' ';
+  append_number(out, p.y());
+  out += ' ';
+  append_number(out, p.z());
+}
+
+void flush_when_large(std::ostream& out, std::string& text) {
+  if (text.size() > (1 << 20)) {
+    out << text;
+    text.clear();
+  }
+}
+
+Vec3 parse_point(const std::vector<std::string_view>& fields, std::size_t first,
+                 const std::string& name, std::size_t line) {
+  Vec3 p;
+  for (std::size_t k = 0; k < 3; ++k) {
+    const auto v = parse_double(fields[first + k]);
+    if (!v || !std::isfinite(*v)) {
+      throw InputError(
+          name, line, "coordinate '" + std::string(fields[first + k]) + "' is not a finite number");
+    }
+    p[static_cast<Eigen::Index>(k)] = *v;
+  }
+  return p;
 }
 
 void append_polygon(const std::vector<long long>& corners, std::size_t vertex_count,

@@ -6,9 +6,12 @@
 #include <cstddef>
 #include <filesystem>
 #include <optional>
+#include <ostream>
 #include <string>
 #include <string_view>
 #include <vector>
+
+#include "molmesh/core/geometry.hpp"
 
 namespace molmesh::io_detail {
 
@@ -43,8 +46,20 @@ std::string_view trim(std::string_view s);
 std::optional<double> parse_double(std::string_view field);
 std::optional<long long> parse_integer(std::string_view field);
 
+// Three finite numbers from fields[first..first+2] (a vertex's coordinates); throws
+// InputError at `line` naming the offending field.
+Vec3 parse_point(const std::vector<std::string_view>& fields, std::size_t first,
+                 const std::string& name, std::size_t line);
+
 // Appends the shortest text that reads back to exactly `value` (round-trip exact).
 void append_number(std::string& out, double value);
+
+// Appends "x y z" (round-trip exact).
+void append_point(std::string& out, const Vec3& p);
+
+// Text writers build their output in a string: this hands it to `out` once it passes 1 MB,
+// so memory stays bounded for big meshes.
+void flush_when_large(std::ostream& out, std::string& text);
 
 // A mesh face with any number of corners, before triangulation.
 // Fan-triangulates polygons (v0, vi, vi+1); throws InputError at `line` for fewer than 3
