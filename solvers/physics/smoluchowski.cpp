@@ -2,6 +2,7 @@
 
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <string>
@@ -42,7 +43,15 @@ Discretisation discretise(const TetMesh& mesh, std::span<const double> beta_w,
   Discretisation out;
   // One exponential per vertex, not four per cell.
   std::vector<double> boltzmann(nv, 1.0);
-  for (std::size_t v = 0; v < beta_w.size(); ++v) boltzmann[v] = std::exp(-beta_w[v]);
+  for (std::size_t v = 0; v < beta_w.size(); ++v) {
+    boltzmann[v] = std::exp(-beta_w[v]);
+    if (!std::isfinite(boltzmann[v]) || !(boltzmann[v] > 0.0)) {
+      throw Error("Smoluchowski: beta*W = " + std::to_string(beta_w[v]) + " at vertex " +
+                  std::to_string(v) +
+                  " puts the Boltzmann factor exp(-beta*W) outside the range of a double; is "
+                  "the potential in kT/e, and sampled in the solvent?");
+    }
+  }
 
   // exp(-beta W) averaged over each cell's vertices: the integral of its P1 interpolant,
   // which stays accurate where the potential varies quickly near the surface.
@@ -166,9 +175,20 @@ SmoluchowskiResult solve_smoluchowski(const TetMesh& mesh, std::span<const doubl
   std::vector<MeshOperator> mesh_operators(coarse_levels.size());
   for (const CoarseLevel& level : coarse_levels)
     if (level.mesh == nullptr) throw Error("Smoluchowski: a coarse level has no mesh");
+  // Coarse levels only precondition. Their vertices can sample the potential grid inside
+  // the molecule (coarse surfaces deviate from the fine one), where grid potentials near
+  // atom centres reach hundreds of kT/e and exp(-beta W) over- or underflows. Their beta W
+  // is clamped to the range the fine level sees: the answer is the fine level's either way.
+  double lowest = 0.0, highest = 0.0;
+  if (!beta_w.empty()) {
+    const auto [lo, hi] = std::minmax_element(beta_w.begin(), beta_w.end());
+    lowest = *lo;
+    highest = *hi;
+  }
   tbb::parallel_for(std::size_t{0}, coarse_levels.size(), [&](std::size_t l) {
-    Discretisation coarse =
-        discretise(*coarse_levels[l].mesh, coarse_levels[l].beta_w, options, {});
+    std::vector<double> clamped(coarse_levels[l].beta_w.begin(), coarse_levels[l].beta_w.end());
+    for (double& w : clamped) w = std::clamp(w, lowest, highest);
+    Discretisation coarse = discretise(*coarse_levels[l].mesh, clamped, options, {});
     mesh_operators[l] = {std::move(coarse.system.matrix), std::move(coarse.system.free_to_full)};
   });
   result.unknowns = static_cast<int>(system.free_to_full.size());

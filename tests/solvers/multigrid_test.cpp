@@ -2,6 +2,7 @@
 // the mesh size, unlike CG with incomplete Cholesky.
 #include <gtest/gtest.h>
 
+#include "molmesh/core/error.hpp"
 #include "shell_mesh.hpp"
 #include "solvers/physics/smoluchowski.hpp"
 
@@ -76,6 +77,34 @@ TEST(Multigrid, CoarseOperatorsDiscretisedOnTheCoarseMeshes) {
   for (std::size_t l = 1; l < mesh.solve.level_nonzeros.size(); ++l)
     EXPECT_LE(mesh.solve.level_nonzeros[l], galerkin.solve.level_nonzeros[l]);
   EXPECT_NEAR(mesh.rate_constant_A3_per_s / galerkin.rate_constant_A3_per_s, 1.0, 1e-6);
+}
+
+// A coarse vertex that samples the potential grid inside the molecule (hundreds of kT/e)
+// must not break the preconditioner: coarse beta*W is clamped to the fine level's range.
+// A fine vertex with such a value is the user's error, reported as such.
+TEST(Multigrid, ExtremeCoarsePotentialIsClampedAndExtremeFinePotentialIsAnError) {
+  const auto h = test::make_shell_hierarchy(
+      {.inner_radius = 10.0, .outer_radius = 100.0, .subdivisions = 3, .radial_layers = 8}, 3);
+  const std::vector<double> fine_beta_w(h.meshes[0].mesh.points.size(), 0.0);
+  std::vector<std::vector<double>> coarse_beta_w;
+  std::vector<CoarseLevel> coarse;
+  coarse_beta_w.reserve(h.meshes.size());
+  for (std::size_t l = 1; l < h.meshes.size(); ++l) {
+    coarse_beta_w.emplace_back(h.meshes[l].mesh.points.size(), 0.0);
+    coarse_beta_w.back()[3] = -900.0;  // exp(900) overflows
+    coarse_beta_w.back()[5] = 900.0;   // exp(-900) underflows
+    coarse.push_back({&h.meshes[l].mesh, coarse_beta_w.back()});
+  }
+  SmoluchowskiOptions options;
+  const auto plain = solve_smoluchowski(h.meshes[0].mesh, {}, h.prolongations, options);
+  const auto clamped =
+      solve_smoluchowski(h.meshes[0].mesh, fine_beta_w, h.prolongations, options, {}, coarse);
+  EXPECT_TRUE(clamped.solve.converged);
+  EXPECT_NEAR(clamped.rate_constant_A3_per_s / plain.rate_constant_A3_per_s, 1.0, 1e-6);
+
+  std::vector<double> bad_fine = fine_beta_w;
+  bad_fine[7] = -900.0;
+  EXPECT_THROW(solve_smoluchowski(h.meshes[0].mesh, bad_fine, h.prolongations, options), Error);
 }
 
 TEST(Multigrid, IncompleteCholeskyNeedsMoreIterationsOnFinerMeshes) {

@@ -44,6 +44,7 @@ struct HierarchyArgs {
   double min_dihedral = 10.0;
   double max_volume = 0.0;
   double size_factor = 1.0;
+  double size_growth = HierarchyOptions{}.size_growth;
   bool no_renumber = false;
 };
 
@@ -93,6 +94,7 @@ void run(const HierarchyArgs& args, const CliContext& ctx) {
   options.tetmesh.min_dihedral_deg = args.min_dihedral;
   if (args.max_volume > 0) options.tetmesh.max_volume = args.max_volume;
   options.tetmesh.size_factor = args.size_factor;
+  options.size_growth = args.size_growth;
   options.renumber = !args.no_renumber;
 
   HierarchyReport report;
@@ -118,6 +120,7 @@ void run(const HierarchyArgs& args, const CliContext& ctx) {
   p["min_dihedral_deg"] = text(args.min_dihedral);
   p["max_volume"] = args.max_volume > 0 ? text(args.max_volume) : "none";
   p["size_factor"] = text(args.size_factor);
+  p["size_growth"] = text(args.size_growth);
   p["renumbering"] = args.no_renumber ? "none" : "reverse Cuthill-McKee";
   if (!report.levels.empty()) p["tetgen_switches"] = report.levels.front().tetmesh.tetgen_switches;
   p["molmesh_version"] = "0.1.0";
@@ -216,6 +219,12 @@ const CommandRegistration registration{
                       "aim at their edge length times this factor, graded in between; smaller: "
                       "finer near the surface; 0: no grading")
           ->check(CLI::NonNegativeNumber)
+          ->capture_default_str();
+      cmd->add_option("--size-growth", args->size_growth,
+                      "Level L grades with --size-factor times this to the power L, so coarse "
+                      "levels coarsen the far field too, not only the surface (1: same far field "
+                      "on every level)")
+          ->check(CLI::Range(1.0, 10.0))
           ->capture_default_str();
       cmd->add_flag("--no-renumber", args->no_renumber,
                     "Keep TetGen's vertex numbering (default: reverse Cuthill-McKee, permutation "

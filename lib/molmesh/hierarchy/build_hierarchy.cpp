@@ -1,6 +1,7 @@
 #include "molmesh/hierarchy/build_hierarchy.hpp"
 
 #include <chrono>
+#include <cmath>
 #include <string>
 
 #include "molmesh/core/error.hpp"
@@ -50,6 +51,10 @@ Hierarchy build_hierarchy(const SurfaceMesh& surface, const Atoms& atoms,
       throw Error("hierarchy: T0 values must not decrease (level 0 is the finest)");
     }
   }
+  if (!(options.size_growth >= 1.0) || !std::isfinite(options.size_growth)) {
+    throw Error("hierarchy: the size growth per level must be a number >= 1 (got " +
+                std::to_string(options.size_growth) + ")");
+  }
   const int count = static_cast<int>(options.t0.size());
   // Progress: each level's surface + volume, then the transfers, as equal shares.
   const double share = 1.0 / (2.0 * count + 1.0);
@@ -91,7 +96,10 @@ Hierarchy build_hierarchy(const SurfaceMesh& surface, const Atoms& atoms,
     Reporter tet_sub;
     tet_sub.on_warning = reporter.on_warning;
     try {
-      out.volume = tetrahedralize(out.surface, atoms, tet_options, tet_sub, &level_report.tetmesh);
+      TetMeshOptions level_options = tet_options;
+      level_options.size_factor = tet_options.size_factor * std::pow(options.size_growth, level);
+      out.volume =
+          tetrahedralize(out.surface, atoms, level_options, tet_sub, &level_report.tetmesh);
     } catch (const Error& e) {
       throw Error("hierarchy " + name + ": volume meshing failed: " + e.what());
     }

@@ -23,6 +23,11 @@ struct HierarchyOptions {
   std::vector<double> t0 = {0.1, 0.3, 0.5, 0.7};
   ProcessingOptions processing;  // processing.t0 is replaced by one T0 per level
   TetMeshOptions tetmesh;
+  // Level L meshes its volume with tetmesh.size_factor * size_growth^L (when grading is
+  // on). T0 coarsens only the surface; the far field between molecule and outer sphere is
+  // the same on every level unless its target size grows too, and on exterior meshes the
+  // far field is most of the mesh (docs/hierarchy.md).
+  double size_growth = 1.0;
   bool renumber = true;  // reverse Cuthill-McKee on every volume mesh
 };
 
