@@ -27,7 +27,7 @@ struct HierarchyOptions {
   // on). T0 coarsens only the surface; the far field between molecule and outer sphere is
   // the same on every level unless its target size grows too, and on exterior meshes the
   // far field is most of the mesh (docs/hierarchy.md).
-  double size_growth = 1.0;
+  double size_growth = 1.5;
   bool renumber = true;  // reverse Cuthill-McKee on every volume mesh
 };
 
