@@ -443,6 +443,27 @@ std::vector<std::string> field_names(hid_t file, int level) {
   return names;
 }
 
+// One mesh of a level ("volume" or "surface") as the XDMF sidecars describe it: points,
+// cells, and the marker arrays whose lengths match them.
+XdmfMesh describe_mesh(hid_t file, int level, const std::string& part, const std::string& cells,
+                       const std::string& cell_markers, bool tetrahedra) {
+  const std::string base = level_path(level) + "/" + part;
+  XdmfMesh mesh;
+  mesh.name = "level" + std::to_string(level) + "_" + part;
+  mesh.points = base + "/points";
+  mesh.cells = base + "/" + cells;
+  mesh.tetrahedra = tetrahedra;
+  mesh.num_points = dataset_rows(file, mesh.points);
+  mesh.num_cells = dataset_rows(file, mesh.cells);
+  if (dataset_rows(file, base + "/" + cell_markers) == mesh.num_cells) {
+    mesh.attributes.push_back({cell_markers, base + "/" + cell_markers, true, true});
+  }
+  if (dataset_rows(file, base + "/vertex_markers") == mesh.num_points) {
+    mesh.attributes.push_back({"vertex_markers", base + "/vertex_markers", false, true});
+  }
+  return mesh;
+}
+
 // Regenerates every XDMF sidecar from what the HDF5 file holds (sizes and fields), so the
 // sidecars always describe the file as it is.
 void write_sidecars(const std::filesystem::path& h5) {
@@ -451,37 +472,14 @@ void write_sidecars(const std::filesystem::path& h5) {
   const auto folder = h5.parent_path();
   std::vector<XdmfMesh> all;
   for (int level = 0; level < levels; ++level) {
-    const auto base = level_path(level);
-    XdmfMesh volume;
-    volume.name = "level" + std::to_string(level) + "_volume";
-    volume.points = base + "/volume/points";
-    volume.cells = base + "/volume/tetrahedra";
-    volume.tetrahedra = true;
-    volume.num_points = dataset_rows(file.get(), volume.points);
-    volume.num_cells = dataset_rows(file.get(), volume.cells);
-    if (dataset_rows(file.get(), base + "/volume/cell_markers") == volume.num_cells) {
-      volume.attributes.push_back({"cell_markers", base + "/volume/cell_markers", true, true});
-    }
-    if (dataset_rows(file.get(), base + "/volume/vertex_markers") == volume.num_points) {
-      volume.attributes.push_back({"vertex_markers", base + "/volume/vertex_markers", false, true});
-    }
+    XdmfMesh volume =
+        describe_mesh(file.get(), level, "volume", "tetrahedra", "cell_markers", true);
     for (const auto& name : field_names(file.get(), level)) {
-      volume.attributes.push_back({name, base + "/volume/fields/" + name, false, false});
+      volume.attributes.push_back(
+          {name, level_path(level) + "/volume/fields/" + name, false, false});
     }
-    XdmfMesh surface;
-    surface.name = "level" + std::to_string(level) + "_surface";
-    surface.points = base + "/surface/points";
-    surface.cells = base + "/surface/triangles";
-    surface.tetrahedra = false;
-    surface.num_points = dataset_rows(file.get(), surface.points);
-    surface.num_cells = dataset_rows(file.get(), surface.cells);
-    if (dataset_rows(file.get(), base + "/surface/face_markers") == surface.num_cells) {
-      surface.attributes.push_back({"face_markers", base + "/surface/face_markers", true, true});
-    }
-    if (dataset_rows(file.get(), base + "/surface/vertex_markers") == surface.num_points) {
-      surface.attributes.push_back(
-          {"vertex_markers", base + "/surface/vertex_markers", false, true});
-    }
+    XdmfMesh surface =
+        describe_mesh(file.get(), level, "surface", "triangles", "face_markers", false);
     write_xdmf(folder / sidecar_name(h5, level, "volume"), reference, {volume}, false);
     write_xdmf(folder / sidecar_name(h5, level, "surface"), reference, {surface}, false);
     all.push_back(std::move(volume));

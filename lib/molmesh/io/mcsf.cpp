@@ -63,20 +63,9 @@ int marker_of_type(int type, const McsfFaceTypes& types) {
   return type + 100;
 }
 
-int marker_priority(int m) {
-  switch (m) {
-    case markers::kActiveSite:
-      return 3;
-    case markers::kMolecularSurface:
-      return 2;
-    case markers::kOuterSphere:
-      return 1;
-    case markers::kNoMarker:
-      return 0;
-    default:
-      return 4;
-  }
-}
+// Face types the reader did not recognise (marker_of_type: type + 100) outrank molmesh's own,
+// so a user's boundary type is never hidden behind ours.
+int marker_priority(int m) { return m >= 100 ? 4 : markers::vertex_marker_rank(m); }
 
 void write_number(std::ostream& out, double v) {
   char buf[32];

@@ -16,4 +16,20 @@ inline constexpr int kMolecularSurface = 1;
 inline constexpr int kOuterSphere = 2;
 inline constexpr int kActiveSite = 3;
 
+// A vertex on faces with different markers carries the highest-ranked one: the active site
+// wins over the molecular surface, which wins over the outer sphere. Markers outside this
+// table rank like kNoMarker.
+constexpr int vertex_marker_rank(int marker) {
+  switch (marker) {
+    case kActiveSite:
+      return 3;
+    case kMolecularSurface:
+      return 2;
+    case kOuterSphere:
+      return 1;
+    default:
+      return 0;
+  }
+}
+
 }  // namespace molmesh::markers

@@ -436,24 +436,13 @@ TetMesh tetrahedralize(const SurfaceMesh& surface, const Atoms& atoms,
     }
   }
 
-  // Vertex markers: active site wins over molecular surface; the sphere is separate.
-  auto priority = [](int m) {
-    switch (m) {
-      case markers::kActiveSite:
-        return 3;
-      case markers::kMolecularSurface:
-        return 2;
-      case markers::kOuterSphere:
-        return 1;
-      default:
-        return 0;
-    }
-  };
+  // Vertex markers: the highest-ranked marker of the faces around (markers.hpp).
   mesh.vertex_markers.assign(mesh.points.size(), markers::kNoMarker);
   for (std::size_t f = 0; f < mesh.boundary_faces.size(); ++f) {
     const int m = mesh.boundary_face_markers[f];
     for (int v : mesh.boundary_faces[f])
-      if (priority(m) > priority(mesh.vertex_markers[v])) mesh.vertex_markers[v] = m;
+      if (markers::vertex_marker_rank(m) > markers::vertex_marker_rank(mesh.vertex_markers[v]))
+        mesh.vertex_markers[v] = m;
   }
 
   // Vertices on the molecular surface that were not given: Steiner points (0 with Y).
