@@ -3,6 +3,7 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <boost/pending/disjoint_sets.hpp>
 #include <chrono>
 #include <cmath>
 #include <string>
@@ -98,29 +99,18 @@ Discretisation discretise(const TetMesh& mesh, std::span<const double> beta_w,
   // would make the system singular; nothing diffuses into them, so they are left out
   // (c = 0 there) and counted.
   {
-    std::vector<int> parent(nv);
-    for (std::size_t v = 0; v < nv; ++v) parent[v] = static_cast<int>(v);
-    auto find = [&](int v) {
-      while (parent[static_cast<std::size_t>(v)] != v) {
-        parent[static_cast<std::size_t>(v)] =
-            parent[static_cast<std::size_t>(parent[static_cast<std::size_t>(v)])];
-        v = parent[static_cast<std::size_t>(v)];
-      }
-      return v;
-    };
+    boost::disjoint_sets_with_storage<> sets(nv);
     for (std::size_t t = 0; t < mesh.tetrahedra.size(); ++t) {
       if (coefficient[t] == 0.0) continue;
-      const int root = find(mesh.tetrahedra[t][0]);
       for (std::size_t a = 1; a < 4; ++a)
-        parent[static_cast<std::size_t>(find(mesh.tetrahedra[t][a]))] = root;
+        sets.union_set(mesh.tetrahedra[t][0], mesh.tetrahedra[t][a]);
     }
     std::vector<char> anchored(nv, 0);
     for (std::size_t v = 0; v < nv; ++v) {
-      if (in_solvent[v] && dirichlet[v])
-        anchored[static_cast<std::size_t>(find(static_cast<int>(v)))] = 1;
+      if (in_solvent[v] && dirichlet[v]) anchored[sets.find_set(v)] = 1;
     }
     for (std::size_t v = 0; v < nv; ++v) {
-      if (in_solvent[v] && !anchored[static_cast<std::size_t>(find(static_cast<int>(v)))]) {
+      if (in_solvent[v] && !anchored[sets.find_set(v)]) {
         in_solvent[v] = 0;
         dirichlet[v] = 1;
         ++out.isolated_vertices;

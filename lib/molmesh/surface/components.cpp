@@ -1,18 +1,10 @@
 #include "molmesh/surface/components.hpp"
 
 #include <algorithm>
-#include <numeric>
+#include <boost/pending/disjoint_sets.hpp>
 
 namespace molmesh {
 namespace {
-
-int find_root(std::vector<int>& parent, int v) {
-  while (parent[v] != v) {
-    parent[v] = parent[parent[v]];
-    v = parent[v];
-  }
-  return v;
-}
 
 SurfaceMesh keep_triangles(const SurfaceMesh& mesh, const std::vector<char>& keep) {
   SurfaceMesh out;
@@ -30,14 +22,11 @@ SurfaceMesh keep_triangles(const SurfaceMesh& mesh, const std::vector<char>& kee
 }  // namespace
 
 std::vector<SurfaceComponent> surface_components(const SurfaceMesh& mesh) {
-  std::vector<int> parent(mesh.points.size());
-  std::iota(parent.begin(), parent.end(), 0);
-  for (const Triangle& t : mesh.triangles)
-    for (int k = 1; k < 3; ++k) {
-      const int a = find_root(parent, t[0]);
-      const int b = find_root(parent, t[k]);
-      if (a != b) parent[static_cast<std::size_t>(std::max(a, b))] = std::min(a, b);
-    }
+  boost::disjoint_sets_with_storage<> sets(mesh.points.size());
+  for (const Triangle& t : mesh.triangles) {
+    sets.union_set(t[0], t[1]);
+    sets.union_set(t[0], t[2]);
+  }
   Vec3 ref = Vec3::Zero();
   if (!mesh.points.empty()) {
     Vec3 lo = mesh.points[0], hi = mesh.points[0];
@@ -51,7 +40,7 @@ std::vector<SurfaceComponent> surface_components(const SurfaceMesh& mesh) {
   std::vector<SurfaceComponent> components;
   for (std::size_t f = 0; f < mesh.triangles.size(); ++f) {
     const Triangle& t = mesh.triangles[f];
-    const int root = find_root(parent, t[0]);
+    const int root = sets.find_set(t[0]);
     int& c = component_of_root[static_cast<std::size_t>(root)];
     if (c < 0) {
       c = static_cast<int>(components.size());

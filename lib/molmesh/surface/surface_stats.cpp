@@ -1,22 +1,14 @@
 #include "molmesh/surface/surface_stats.hpp"
 
 #include <algorithm>
+#include <boost/pending/disjoint_sets.hpp>
 #include <cmath>
 #include <cstdint>
-#include <numeric>
 #include <utility>
 #include <vector>
 
 namespace molmesh {
 namespace {
-
-int find_root(std::vector<int>& parent, int v) {
-  while (parent[v] != v) {
-    parent[v] = parent[parent[v]];
-    v = parent[v];
-  }
-  return v;
-}
 
 double angle_deg(const Vec3& at, const Vec3& p, const Vec3& q) {
   const Vec3 u = p - at;
@@ -105,15 +97,17 @@ SurfaceStats compute_surface_stats(const SurfaceMesh& mesh) {
       for (int v : mesh.triangles[f])
         incident[fill[static_cast<std::size_t>(v)]++] = static_cast<int>(f);
   }
-  std::vector<int> link_vertex, link_parent;
+  // A vertex is manifold when the edges opposite to it in its triangles form one fan: one
+  // connected set of link vertices.
+  std::vector<int> link_vertex;
+  std::vector<std::pair<int, int>> link_edges;
   for (std::size_t v = 0; v < n_points && manifold; ++v) {
     link_vertex.clear();
-    link_parent.clear();
+    link_edges.clear();
     auto local = [&](int w) {
       for (std::size_t q = 0; q < link_vertex.size(); ++q)
         if (link_vertex[q] == w) return static_cast<int>(q);
       link_vertex.push_back(w);
-      link_parent.push_back(static_cast<int>(link_parent.size()));
       return static_cast<int>(link_vertex.size() - 1);
     };
     for (std::size_t q = start[v]; q < start[v + 1]; ++q) {
@@ -122,29 +116,26 @@ SurfaceStats compute_surface_stats(const SurfaceMesh& mesh) {
       for (int w : t)
         if (w != static_cast<int>(v) && n < 2) others[n++] = w;
       if (n < 2) continue;
-      const int a = find_root(link_parent, local(others[0]));
-      const int b = find_root(link_parent, local(others[1]));
-      link_parent[static_cast<std::size_t>(std::max(a, b))] = std::min(a, b);
+      const int a = local(others[0]);
+      link_edges.emplace_back(a, local(others[1]));
     }
-    int fans = 0;
-    for (std::size_t q = 0; q < link_parent.size(); ++q)
-      if (find_root(link_parent, static_cast<int>(q)) == static_cast<int>(q)) ++fans;
-    if (fans > 1) manifold = false;
+    boost::disjoint_sets_with_storage<> fans(link_vertex.size());
+    for (const auto& [a, b] : link_edges) fans.union_set(a, b);
+    std::size_t fan_count = 0;
+    for (std::size_t q = 0; q < link_vertex.size(); ++q)
+      if (fans.find_set(q) == q) ++fan_count;
+    if (fan_count > 1) manifold = false;
   }
   s.closed = closed && manifold;
   s.manifold = manifold;
 
-  std::vector<int> parent(n_points);
-  std::iota(parent.begin(), parent.end(), 0);
-  for (const Triangle& t : mesh.triangles)
-    for (int k = 1; k < 3; ++k) {
-      const int a = find_root(parent, t[0]);
-      const int b = find_root(parent, t[k]);
-      if (a != b) parent[static_cast<std::size_t>(std::max(a, b))] = std::min(a, b);
-    }
+  boost::disjoint_sets_with_storage<> sets(n_points);
+  for (const Triangle& t : mesh.triangles) {
+    sets.union_set(t[0], t[1]);
+    sets.union_set(t[0], t[2]);
+  }
   for (std::size_t v = 0; v < n_points; ++v)
-    if (degree[v] > 0 && find_root(parent, static_cast<int>(v)) == static_cast<int>(v))
-      ++s.components;
+    if (degree[v] > 0 && sets.find_set(v) == v) ++s.components;
   s.euler_characteristic =
       static_cast<long>(s.vertices) - static_cast<long>(n_edges) + static_cast<long>(s.triangles);
   return s;
