@@ -14,6 +14,14 @@ std::vector<unsigned> boundary_vertex_marker_bits(const TetMesh& mesh) {
   return bits;
 }
 
+unsigned marker_mask(std::span<const int> markers) {
+  unsigned mask = 0;
+  for (int m : markers) {
+    if (m >= 0 && m <= 30) mask |= 1u << m;
+  }
+  return mask;
+}
+
 ReducedSystem reduce_dirichlet(const SparseMatrix& a, const Eigen::VectorXd& b,
                                std::span<const char> is_dirichlet, const Eigen::VectorXd& values) {
   const auto n = static_cast<std::size_t>(a.rows());

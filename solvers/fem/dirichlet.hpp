@@ -16,6 +16,10 @@ namespace molmesh::solvers {
 // marker is b (markers 0..30).
 std::vector<unsigned> boundary_vertex_marker_bits(const TetMesh& mesh);
 
+// The bits of `markers` in the form boundary_vertex_marker_bits uses (markers outside
+// 0..30 are ignored).
+unsigned marker_mask(std::span<const int> markers);
+
 struct ReducedSystem {
   std::vector<int> free_to_full;  // free index -> vertex
   std::vector<int> full_to_free;  // vertex -> free index, or -1 for a Dirichlet vertex

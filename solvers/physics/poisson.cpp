@@ -31,10 +31,7 @@ double evaluate(const TetMesh& mesh, const Eigen::VectorXd& field, const PointLo
 
 std::vector<char> dirichlet_vertices(const TetMesh& mesh, const std::vector<int>& markers) {
   const std::vector<unsigned> bits = boundary_vertex_marker_bits(mesh);
-  unsigned mask = 0;
-  for (int m : markers) {
-    if (m >= 0 && m <= 30) mask |= 1u << m;
-  }
+  const unsigned mask = marker_mask(markers);
   std::vector<char> dirichlet(mesh.points.size(), 0);
   for (std::size_t v = 0; v < dirichlet.size(); ++v) dirichlet[v] = (bits[v] & mask) != 0;
   return dirichlet;
@@ -121,15 +118,14 @@ PoissonResult solve_solvation_energy(const TetMesh& mesh, const Atoms& atoms,
     result.unknowns = static_cast<int>(system.free_to_full.size());
     // Coarse operators are part of the multigrid setup: timed and counted there.
     const auto coarse_start = std::chrono::steady_clock::now();
-    std::vector<MeshOperator> mesh_operators(coarse_meshes.size());
+    std::vector<MeshOperator> mesh_operators;
     if (options.solver.preconditioning == Preconditioning::kMultigrid) {
       for (const TetMesh* coarse : coarse_meshes)
         if (coarse == nullptr) throw Error("Poisson: a coarse level has no mesh");
+      mesh_operators.resize(coarse_meshes.size());
       tbb::parallel_for(std::size_t{0}, coarse_meshes.size(), [&](std::size_t l) {
         mesh_operators[l] = coarse_operator(*coarse_meshes[l], table, options.dirichlet_markers);
       });
-    } else {
-      mesh_operators.clear();
     }
     const double coarse_seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - coarse_start).count();

@@ -17,14 +17,6 @@ namespace molmesh::solvers {
 
 namespace {
 
-unsigned marker_mask(const std::vector<int>& list) {
-  unsigned mask = 0;
-  for (int m : list) {
-    if (m >= 0 && m <= 30) mask |= 1u << m;
-  }
-  return mask;
-}
-
 // The assembled Slotboom operator of one mesh with its boundary conditions.
 struct Discretisation {
   SparseMatrix k;  // un-reduced stiffness
@@ -162,6 +154,8 @@ SmoluchowskiResult solve_smoluchowski(const TetMesh& mesh, std::span<const doubl
   const auto coarse_start = std::chrono::steady_clock::now();
   // Levels are independent; discretising them side by side also overlaps the serial parts
   // of assembly (the sparse matrix build).
+  // Only multigrid uses them.
+  if (options.solver.preconditioning != Preconditioning::kMultigrid) coarse_levels = {};
   std::vector<MeshOperator> mesh_operators(coarse_levels.size());
   for (const CoarseLevel& level : coarse_levels)
     if (level.mesh == nullptr) throw Error("Smoluchowski: a coarse level has no mesh");

@@ -12,17 +12,27 @@
 namespace molmesh::solvers {
 namespace {
 
-TEST(Poisson, BornIonSolvationEnergy) {
-  const double radius = 3.0, sdie = 78.54;
-  const auto h = test::make_shell_hierarchy({.inner_radius = radius,
-                                             .outer_radius = 15.0,
-                                             .subdivisions = 4,
-                                             .radial_layers = 8,
-                                             .ball_layers = 4},
-                                            4);
+// A ball of radius 3 Å (the ion) in a shell to 15 Å, four nested levels, and the ion.
+test::ShellHierarchy born_hierarchy() {
+  return test::make_shell_hierarchy({.inner_radius = 3.0,
+                                     .outer_radius = 15.0,
+                                     .subdivisions = 4,
+                                     .radial_layers = 8,
+                                     .ball_layers = 4},
+                                    4);
+}
+
+Atom born_ion() {
   Atom ion;
   ion.charge = 1.0;
-  ion.radius = radius;
+  ion.radius = 3.0;
+  return ion;
+}
+
+TEST(Poisson, BornIonSolvationEnergy) {
+  const double radius = 3.0, sdie = 78.54;
+  const auto h = born_hierarchy();
+  const Atom ion = born_ion();
   PoissonOptions options;
   options.pdie = 1.0;
   options.sdie = sdie;
@@ -48,15 +58,8 @@ TEST(Poisson, BornIonSolvationEnergy) {
 // Coarse operators discretised on the coarse meshes (their own regions and outer sphere)
 // precondition the same fine system: the same energy, a mesh-stencil hierarchy.
 TEST(Poisson, CoarseOperatorsFromTheCoarseMeshesGiveTheSameEnergy) {
-  const auto h = test::make_shell_hierarchy({.inner_radius = 3.0,
-                                             .outer_radius = 15.0,
-                                             .subdivisions = 4,
-                                             .radial_layers = 8,
-                                             .ball_layers = 4},
-                                            4);
-  Atom ion;
-  ion.charge = 1.0;
-  ion.radius = 3.0;
+  const auto h = born_hierarchy();
+  const Atom ion = born_ion();
   const auto galerkin = solve_solvation_energy(h.meshes[0].mesh, {ion}, h.prolongations, {});
   std::vector<const TetMesh*> coarse;
   for (std::size_t l = 1; l < h.meshes.size(); ++l) coarse.push_back(&h.meshes[l].mesh);
