@@ -5,12 +5,12 @@
 #include <cmath>
 #include <cstdint>
 #include <deque>
-#include <numbers>
 #include <numeric>
 #include <sstream>
 #include <unordered_map>
 
 #include "molmesh/core/error.hpp"
+#include "molmesh/geometry/winding_number.hpp"
 
 namespace molmesh {
 namespace {
@@ -129,24 +129,6 @@ double area_ratio(const std::vector<Vec3>& p, const Triangle& t) {
       std::max({(b - a).squaredNorm(), (c - b).squaredNorm(), (a - c).squaredNorm()});
   if (longest == 0.0) return 0.0;
   return 0.5 * (b - a).cross(c - a).norm() / longest;
-}
-
-// Generalised winding number of point q with respect to the triangles `faces`
-// (Van Oosterom & Strackee solid angles): ±1 inside a closed surface, 0 outside.
-double winding_number(const std::vector<Vec3>& p, const std::vector<Triangle>& tris,
-                      const std::vector<int>& faces, const Vec3& q) {
-  double total = 0.0;
-  for (int f : faces) {
-    const Triangle& t = tris[static_cast<std::size_t>(f)];
-    const Vec3 a = p[static_cast<std::size_t>(t[0])] - q;
-    const Vec3 b = p[static_cast<std::size_t>(t[1])] - q;
-    const Vec3 c = p[static_cast<std::size_t>(t[2])] - q;
-    const double la = a.norm(), lb = b.norm(), lc = c.norm();
-    const double num = a.dot(b.cross(c));
-    const double den = la * lb * lc + a.dot(b) * lc + b.dot(c) * la + c.dot(a) * lb;
-    total += 2.0 * std::atan2(num, den);
-  }
-  return total / (4.0 * std::numbers::pi);
 }
 
 std::string format_point(const Vec3& p) {

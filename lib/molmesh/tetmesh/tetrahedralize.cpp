@@ -9,12 +9,12 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
-#include <numbers>
 #include <sstream>
 #include <unordered_map>
 #include <unordered_set>
 
 #include "molmesh/core/error.hpp"
+#include "molmesh/geometry/winding_number.hpp"
 #include "molmesh/tetmesh/markers.hpp"
 #include "molmesh/tetmesh/molecule_size.hpp"
 #include "molmesh/tetmesh/outer_sphere.hpp"
@@ -60,21 +60,6 @@ struct PointKeyHash {
 std::array<std::uint64_t, 3> point_key(const Vec3& p) {
   return {std::bit_cast<std::uint64_t>(p.x() + 0.0), std::bit_cast<std::uint64_t>(p.y() + 0.0),
           std::bit_cast<std::uint64_t>(p.z() + 0.0)};
-}
-
-// Generalised winding number of a closed, outward-oriented surface at q: 1 inside, 0
-// outside (cavities, whose faces point into the cavity, count as outside). Van Oosterom &
-// Strackee's solid angle formula.
-double winding_number(const SurfaceMesh& s, const Vec3& q) {
-  double total = 0.0;
-  for (const auto& t : s.triangles) {
-    const Vec3 a = s.points[t[0]] - q, b = s.points[t[1]] - q, c = s.points[t[2]] - q;
-    const double la = a.norm(), lb = b.norm(), lc = c.norm();
-    const double num = a.dot(b.cross(c));
-    const double den = la * lb * lc + a.dot(b) * lc + b.dot(c) * la + c.dot(a) * lb;
-    total += 2.0 * std::atan2(num, den);
-  }
-  return total / (4.0 * std::numbers::pi);
 }
 
 std::string tetgen_error_message(int code) {
@@ -384,7 +369,7 @@ TetMesh tetrahedralize(const SurfaceMesh& surface, const Atoms& atoms,
     const Tetrahedron& st = tets[seed];
     const Vec3 centroid =
         (point_at(st[0]) + point_at(st[1]) + point_at(st[2]) + point_at(st[3])) / 4.0;
-    component_region.push_back(winding_number(surface, centroid) > 0.5 ? markers::kMoleculeRegion
+    component_region.push_back(winding_number(surface.points, surface.triangles, centroid) > 0.5 ? markers::kMoleculeRegion
                                                                        : markers::kSolventRegion);
   }
 
