@@ -12,6 +12,7 @@
 #include <string>
 
 #include "molmesh/core/error.hpp"
+#include "molmesh/geometry/predicates.hpp"
 #include "molmesh/processing/edge_flips.hpp"
 #include "molmesh/processing/halfedge_mesh.hpp"
 #include "molmesh/processing/structure_tensor.hpp"
@@ -63,58 +64,6 @@ struct Scratch {
   std::vector<int> choice;
   std::vector<Triangle> local;  // chosen triangles in ring indices
 };
-
-double orient3d(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
-  return (b - a).cross(c - a).dot(d - a);
-}
-
-// Proper crossing of segment pq through the interior of triangle abc. Touching and
-// coplanar contacts do not count: shared vertices and edges are handled by the caller.
-bool segment_crosses_triangle(const Vec3& p, const Vec3& q, const Vec3& a, const Vec3& b,
-                              const Vec3& c) {
-  const double dp = orient3d(a, b, c, p);
-  const double dq = orient3d(a, b, c, q);
-  if ((dp > 0 && dq > 0) || (dp < 0 && dq < 0) || dp == dq) return false;
-  const double s1 = orient3d(p, q, a, b);
-  const double s2 = orient3d(p, q, b, c);
-  const double s3 = orient3d(p, q, c, a);
-  return (s1 > 0 && s2 > 0 && s3 > 0) || (s1 < 0 && s2 < 0 && s3 < 0);
-}
-
-// Do two triangles (given by vertex ids) intersect other than along what they share?
-bool triangles_clash(const HalfedgeMesh& mesh, const Triangle& s, const Triangle& t) {
-  int shared = 0;
-  for (int i = 0; i < 3; ++i) {
-    const bool in_t = s[i] == t[0] || s[i] == t[1] || s[i] == t[2];
-    shared += in_t ? 1 : 0;
-  }
-  auto P = [&](int v) -> const Vec3& { return mesh.position(v); };
-  if (shared >= 2) return false;  // edge-adjacent pairs are checked by the fold test
-  if (shared == 1) {
-    // Only the edges opposite the shared vertex can cross the other triangle.
-    int common = -1;
-    for (int i = 0; i < 3; ++i) {
-      if (s[i] == t[0] || s[i] == t[1] || s[i] == t[2]) common = s[i];
-    }
-    auto opposite = [&](const Triangle& x, int& a, int& b) {
-      const int i = x[0] == common ? 0 : (x[1] == common ? 1 : 2);
-      a = x[(i + 1) % 3];
-      b = x[(i + 2) % 3];
-    };
-    int a, b;
-    opposite(s, a, b);
-    if (segment_crosses_triangle(P(a), P(b), P(t[0]), P(t[1]), P(t[2]))) return true;
-    opposite(t, a, b);
-    return segment_crosses_triangle(P(a), P(b), P(s[0]), P(s[1]), P(s[2]));
-  }
-  for (int i = 0; i < 3; ++i) {
-    if (segment_crosses_triangle(P(s[i]), P(s[(i + 1) % 3]), P(t[0]), P(t[1]), P(t[2])))
-      return true;
-    if (segment_crosses_triangle(P(t[i]), P(t[(i + 1) % 3]), P(s[0]), P(s[1]), P(s[2])))
-      return true;
-  }
-  return false;
-}
 
 // Chooses how to fill the hole left by deleting v, or returns false if no safe filling
 // exists. Read-only on the mesh. The triangulation maximises the smallest angle (ties: the
@@ -311,7 +260,8 @@ bool plan_removal(const HalfedgeMesh& mesh, int v, Scratch& s, std::vector<Trian
           (a.cwiseMin(b).cwiseMin(c).array() > hi.array()).any()) {
         continue;
       }
-      if (triangles_clash(mesh, t, other)) return false;
+      if (triangles_intersect(mesh.positions(), t, other, SegmentContact::kProperCrossing))
+        return false;
     }
   }
   return true;

@@ -42,6 +42,7 @@ class HalfedgeMesh {
 
   // --- geometry -----------------------------------------------------------------------
   const Vec3& position(int v) const { return positions_[v]; }
+  const std::vector<Vec3>& positions() const { return positions_; }
   void set_position(int v, const Vec3& p) { positions_[v] = p; }
   // Unnormalised face normal (twice the area vector), outward for a well-oriented face.
   Vec3 face_area_vector(int f) const;
