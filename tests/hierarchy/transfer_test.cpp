@@ -147,18 +147,6 @@ TEST(SurfaceProlongation, ProvenanceIsIdentityAndRowsSumToOne) {
   for (Eigen::Index i = 0; i < exact.size(); ++i) ASSERT_NEAR(interpolated[i], exact[i], 1e-9);
 }
 
-TEST(ClosestPoint, BarycentricsOfRegions) {
-  const Vec3 a(0, 0, 0), b(1, 0, 0), c(0, 1, 0);
-  EXPECT_TRUE(
-      closest_point_barycentric(Vec3(-1, -1, 3), a, b, c).isApprox(Eigen::Vector3d(1, 0, 0)));
-  EXPECT_TRUE(
-      closest_point_barycentric(Vec3(0.5, -2, 0), a, b, c).isApprox(Eigen::Vector3d(0.5, 0.5, 0)));
-  EXPECT_TRUE(closest_point_barycentric(Vec3(0.25, 0.25, -4), a, b, c)
-                  .isApprox(Eigen::Vector3d(0.5, 0.25, 0.25)));
-  EXPECT_TRUE(
-      closest_point_barycentric(Vec3(1, 1, 0), a, b, c).isApprox(Eigen::Vector3d(0, 0.5, 0.5)));
-}
-
 TEST(Renumber, ReverseCuthillMcKeeIsAPermutationThatShrinksBandwidth) {
   auto cube = testing::structured_cube(8);
   // Scramble the numbering first so there is something to recover.

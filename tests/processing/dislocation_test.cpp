@@ -13,15 +13,6 @@
 namespace molmesh {
 namespace {
 
-TEST(ClosestPoint, RegionsOfATriangle) {
-  const Vec3 a(0, 0, 0), b(1, 0, 0), c(0, 1, 0);
-  EXPECT_TRUE(closest_point_on_triangle(Vec3(0.2, 0.2, 3), a, b, c).isApprox(Vec3(0.2, 0.2, 0)));
-  EXPECT_TRUE(closest_point_on_triangle(Vec3(-1, -1, 0), a, b, c).isApprox(a));
-  EXPECT_TRUE(closest_point_on_triangle(Vec3(2, -1, 1), a, b, c).isApprox(b));
-  EXPECT_TRUE(closest_point_on_triangle(Vec3(0.5, -2, 0), a, b, c).isApprox(Vec3(0.5, 0, 0)));
-  EXPECT_TRUE(closest_point_on_triangle(Vec3(1, 1, 0), a, b, c).isApprox(Vec3(0.5, 0.5, 0)));
-}
-
 TEST(TriangleBvh, NearestMatchesBruteForce) {
   const SurfaceMesh sphere = improve_test::icosphere(3, 5.0);
   const TriangleBvh bvh(sphere);

@@ -3,13 +3,14 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
-#include <Eigen/LU>
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <utility>
 
 #include "molmesh/core/error.hpp"
+#include "molmesh/geometry/closest_point.hpp"
+#include "molmesh/geometry/tetrahedron.hpp"
 #include "molmesh/hierarchy/aabb_tree.hpp"
 
 namespace molmesh {
@@ -18,20 +19,12 @@ namespace {
 using Entry = std::pair<int, double>;
 using Row = std::vector<Entry>;
 
-// Barycentric coordinates in a tetrahedron never reach exactly zero on shared faces in
-// floating point; this much (dimensionless) outside still counts as inside.
-constexpr double kInsideTolerance = 1e-9;
 // Weights below this are rounding noise (a fine vertex coinciding with a coarse one).
 constexpr double kDropWeight = 1e-13;
 
 Eigen::Vector4d tet_barycentric(const TetMesh& mesh, const Tetrahedron& t, const Vec3& p) {
-  const Vec3& a = mesh.points[static_cast<std::size_t>(t[0])];
-  Eigen::Matrix3d m;
-  m.col(0) = mesh.points[static_cast<std::size_t>(t[1])] - a;
-  m.col(1) = mesh.points[static_cast<std::size_t>(t[2])] - a;
-  m.col(2) = mesh.points[static_cast<std::size_t>(t[3])] - a;
-  const Eigen::Vector3d x = m.partialPivLu().solve(p - a);
-  return {1.0 - x.sum(), x[0], x[1], x[2]};
+  const auto P = [&](int k) -> const Vec3& { return mesh.points[static_cast<std::size_t>(t[k])]; };
+  return molmesh::tet_barycentric(P(0), P(1), P(2), P(3), p);
 }
 
 Box3 box_of(std::span<const int> vertices, const std::vector<Vec3>& points) {
@@ -116,47 +109,7 @@ AabbTree point_tree(const std::vector<Vec3>& points) {
 
 }  // namespace
 
-Eigen::Vector3d closest_point_barycentric(const Vec3& p, const Vec3& a, const Vec3& b,
-                                          const Vec3& c) {
-  // Voronoi-region walk (Ericson, Real-Time Collision Detection §5.1.5).
-  const Vec3 ab = b - a, ac = c - a, ap = p - a;
-  const double d1 = ab.dot(ap), d2 = ac.dot(ap);
-  if (d1 <= 0 && d2 <= 0) return {1, 0, 0};
-  const Vec3 bp = p - b;
-  const double d3 = ab.dot(bp), d4 = ac.dot(bp);
-  if (d3 >= 0 && d4 <= d3) return {0, 1, 0};
-  const double vc = d1 * d4 - d3 * d2;
-  if (vc <= 0 && d1 >= 0 && d3 <= 0 && d1 - d3 > 0) {
-    const double v = d1 / (d1 - d3);
-    return {1 - v, v, 0};
-  }
-  const Vec3 cp = p - c;
-  const double d5 = ab.dot(cp), d6 = ac.dot(cp);
-  if (d6 >= 0 && d5 <= d6) return {0, 0, 1};
-  const double vb = d5 * d2 - d1 * d6;
-  if (vb <= 0 && d2 >= 0 && d6 <= 0 && d2 - d6 > 0) {
-    const double w = d2 / (d2 - d6);
-    return {1 - w, 0, w};
-  }
-  const double va = d3 * d6 - d5 * d4;
-  if (va <= 0 && d4 - d3 >= 0 && d5 - d6 >= 0 && (d4 - d3) + (d5 - d6) > 0) {
-    const double w = (d4 - d3) / ((d4 - d3) + (d5 - d6));
-    return {0, 1 - w, w};
-  }
-  const double total = va + vb + vc;
-  if (!(total > 0)) {
-    // Degenerate (zero-area) triangle: nearest corner.
-    const double da = ap.squaredNorm(), db = bp.squaredNorm(), dc = cp.squaredNorm();
-    if (da <= db && da <= dc) return {1, 0, 0};
-    return db <= dc ? Eigen::Vector3d(0, 1, 0) : Eigen::Vector3d(0, 0, 1);
-  }
-  const double v = vb / total, w = vc / total;
-  return {1 - v - w, v, w};
-}
-
 std::vector<Triangle> tet_mesh_boundary(const TetMesh& mesh) {
-  // Outward faces of a positively oriented tetrahedron, one opposite each vertex.
-  static constexpr int kFaces[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
   struct Face {
     std::array<int, 3> key;
     Triangle oriented;
@@ -164,7 +117,7 @@ std::vector<Triangle> tet_mesh_boundary(const TetMesh& mesh) {
   std::vector<Face> faces;
   faces.reserve(mesh.tetrahedra.size() * 4);
   for (const auto& t : mesh.tetrahedra) {
-    for (const auto& f : kFaces) {
+    for (const auto& f : kTetFaces) {
       Triangle tri{t[static_cast<std::size_t>(f[0])], t[static_cast<std::size_t>(f[1])],
                    t[static_cast<std::size_t>(f[2])]};
       auto key = tri;

@@ -38,10 +38,6 @@ SparseMatrix volume_prolongation(const TetMesh& coarse, const TetMesh& fine,
 SparseMatrix surface_prolongation(const SurfaceMesh& coarse, const SurfaceMesh& fine,
                                   std::span<const int> provenance, TransferStats* stats = nullptr);
 
-// Closest point of triangle (a, b, c) to p, as barycentric weights (all >= 0, sum 1).
-Eigen::Vector3d closest_point_barycentric(const Vec3& p, const Vec3& a, const Vec3& b,
-                                          const Vec3& c);
-
 // Faces of `mesh` that belong to exactly one tetrahedron.
 std::vector<Triangle> tet_mesh_boundary(const TetMesh& mesh);
 

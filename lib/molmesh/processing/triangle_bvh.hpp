@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "molmesh/core/geometry.hpp"
+#include "molmesh/geometry/closest_point.hpp"
 #include "molmesh/surface/surface_mesh.hpp"
 
 namespace molmesh {
@@ -44,8 +45,5 @@ class TriangleBvh {
   std::vector<Node> nodes_;
   std::vector<std::int32_t> order_;
 };
-
-// Closest point to p on the triangle (a, b, c) (Ericson, Real-Time Collision Detection 5.1.5).
-Vec3 closest_point_on_triangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c);
 
 }  // namespace molmesh
