@@ -14,6 +14,7 @@
 #include <tuple>
 
 #include "io/io_test_support.hpp"
+#include "molmesh/geometry/predicates.hpp"
 #include "molmesh/io/surface_mesh_io.hpp"
 #include "molmesh/io/volume_io.hpp"
 
@@ -111,9 +112,8 @@ TEST(Interop, WeReadMeshioSurfaceFiles) {
     const SurfaceMesh m = read_surface_mesh(dir / file);
     ASSERT_EQ(m.points.size(), 4u) << file;
     ASSERT_EQ(m.triangles.size(), 4u) << file;
-    double volume = 0.0;  // closed and consistently oriented: |signed volume| = 1.25^3 / 6
-    for (const Triangle& t : m.triangles)
-      volume += m.points[t[0]].dot(m.points[t[1]].cross(m.points[t[2]])) / 6.0;
+    // closed and consistently oriented: |signed volume| = 1.25^3 / 6
+    const double volume = enclosed_volume(m.points, m.triangles);
     EXPECT_NEAR(std::abs(volume), 1.25 * 1.25 * 1.25 / 6.0, 1e-6) << file;
   }
 }

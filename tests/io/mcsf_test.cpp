@@ -9,6 +9,7 @@
 #include <map>
 
 #include "io_test_support.hpp"
+#include "molmesh/geometry/predicates.hpp"
 #include "molmesh/io/volume_mesh_io.hpp"
 #include "molmesh/tetmesh/markers.hpp"
 #include "molmesh/tetmesh/outer_sphere.hpp"
@@ -83,7 +84,7 @@ TEST(Mcsf, ReadsApbsExampleMesh) {
   EXPECT_EQ(m.tetrahedra.size(), 6u);
   double volume = 0.0;
   for (const auto& t : m.tetrahedra)
-    volume += tet_volume(m.points[t[0]], m.points[t[1]], m.points[t[2]], m.points[t[3]]);
+    volume += signed_volume(m.points[t[0]], m.points[t[1]], m.points[t[2]], m.points[t[3]]);
   EXPECT_NEAR(volume, 12.0 * 12.0 * 12.0, 1e-9);
   EXPECT_FALSE(m.boundary_faces.empty());
 }

@@ -6,6 +6,7 @@
 #include <numbers>
 #include <utility>
 
+#include "molmesh/geometry/predicates.hpp"
 #include "molmesh/surface/surface_mesh.hpp"
 
 namespace molmesh::improve_test {
@@ -76,10 +77,7 @@ inline SurfaceMesh planar_grid(int n, double h = 1.0) {
 
 // Signed volume enclosed by a closed, outward-oriented mesh.
 inline double enclosed_volume(const SurfaceMesh& m) {
-  double v = 0;
-  for (const Triangle& t : m.triangles)
-    v += m.points[t[0]].dot(m.points[t[1]].cross(m.points[t[2]])) / 6.0;
-  return v;
+  return molmesh::enclosed_volume(m.points, m.triangles);
 }
 
 }  // namespace molmesh::improve_test

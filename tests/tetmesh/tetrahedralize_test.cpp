@@ -11,6 +11,7 @@
 #include <set>
 
 #include "molmesh/core/error.hpp"
+#include "molmesh/geometry/predicates.hpp"
 #include "molmesh/tetmesh/markers.hpp"
 #include "molmesh/tetmesh/outer_sphere.hpp"
 #include "molmesh/tetmesh/tet_stats.hpp"
@@ -36,17 +37,14 @@ double total_volume(const TetMesh& m, int region = -1) {
   for (std::size_t t = 0; t < m.tetrahedra.size(); ++t) {
     if (region >= 0 && m.cell_markers[t] != region) continue;
     const auto& tet = m.tetrahedra[t];
-    v += tet_volume(m.points[tet[0]], m.points[tet[1]], m.points[tet[2]], m.points[tet[3]]);
+    v += signed_volume(m.points[tet[0]], m.points[tet[1]], m.points[tet[2]], m.points[tet[3]]);
   }
   return v;
 }
 
 // Volume enclosed by a closed, outward-oriented triangle surface (divergence theorem).
 double enclosed_volume(const SurfaceMesh& s) {
-  double v = 0.0;
-  for (const auto& t : s.triangles)
-    v += s.points[t[0]].dot(s.points[t[1]].cross(s.points[t[2]])) / 6.0;
-  return v;
+  return molmesh::enclosed_volume(s.points, s.triangles);
 }
 
 // Every face of every tet is shared by exactly one other tet or is listed as a boundary
@@ -248,8 +246,8 @@ TEST(Tetrahedralize, VolumeBoundAndExpertSwitches) {
   for (const auto& t : fine.tetrahedra) {
     bool touches_surface = false;
     for (int v : t) touches_surface = touches_surface || fine.vertex_markers[v] != kNoMarker;
-    if (!touches_surface && tet_volume(fine.points[t[0]], fine.points[t[1]], fine.points[t[2]],
-                                       fine.points[t[3]]) > 0.05 * (1 + 1e-9))
+    if (!touches_surface && signed_volume(fine.points[t[0]], fine.points[t[1]], fine.points[t[2]],
+                                          fine.points[t[3]]) > 0.05 * (1 + 1e-9))
       ++over;
   }
   EXPECT_LE(over, fine.tetrahedra.size() / 100) << over << " of " << fine.tetrahedra.size();

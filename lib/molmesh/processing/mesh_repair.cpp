@@ -10,6 +10,7 @@
 #include <unordered_map>
 
 #include "molmesh/core/error.hpp"
+#include "molmesh/geometry/predicates.hpp"
 #include "molmesh/geometry/winding_number.hpp"
 
 namespace molmesh {
@@ -467,7 +468,7 @@ SurfaceMesh repair_surface_mesh(const SurfaceMesh& input, const MeshRepairOption
         const Vec3& p0 = points[static_cast<std::size_t>(t[0])];
         const Vec3& p1 = points[static_cast<std::size_t>(t[1])];
         const Vec3& p2 = points[static_cast<std::size_t>(t[2])];
-        volume[c] += p0.dot(p1.cross(p2)) / 6.0;
+        volume[c] += signed_volume(Vec3::Zero(), p0, p1, p2);
         for (const Vec3* p : {&p0, &p1, &p2}) {
           lo[c] = lo[c].cwiseMin(*p);
           hi[c] = hi[c].cwiseMax(*p);

@@ -5,22 +5,12 @@
 #include <Eigen/Geometry>
 #include <cmath>
 
+#include "molmesh/geometry/predicates.hpp"
 #include "molmesh/processing/vertex_moves.hpp"
 #include "molmesh/processing/vertex_normals.hpp"
 #include "molmesh/processing/vertex_rings.hpp"
 
 namespace molmesh {
-namespace {
-
-double signed_volume(const SurfaceMesh& mesh) {
-  double v = 0;
-  for (const Triangle& t : mesh.triangles) {
-    v += mesh.points[t[0]].dot(mesh.points[t[1]].cross(mesh.points[t[2]]));
-  }
-  return v / 6.0;
-}
-
-}  // namespace
 
 void smooth_normals(SurfaceMesh& mesh, const NormalSmoothingOptions& options,
                     const Reporter& reporter) {
@@ -30,7 +20,7 @@ void smooth_normals(SurfaceMesh& mesh, const NormalSmoothingOptions& options,
   const VertexAdjacency rings = ordered_one_rings(mesh, faces);
   const auto colours = colour_classes(vertex_neighbours(mesh, faces));
   const bool has_frozen = options.frozen.size() == mesh.points.size();
-  const double volume_before = signed_volume(mesh);
+  const double volume_before = enclosed_volume(mesh.points, mesh.triangles);
 
   // Face areas and normals of the input.
   std::vector<Vec3> normals(nf);
@@ -93,7 +83,7 @@ void smooth_normals(SurfaceMesh& mesh, const NormalSmoothingOptions& options,
   if (options.restore_volume) {
     // A uniform offset δ along the unit vertex normals changes the volume by ≈ δ·area.
     for (int it = 0; it < 2; ++it) {
-      const double volume = signed_volume(mesh);
+      const double volume = enclosed_volume(mesh.points, mesh.triangles);
       double area = 0;
       for (const Triangle& t : mesh.triangles) {
         area += 0.5 * (mesh.points[t[1]] - mesh.points[t[0]])

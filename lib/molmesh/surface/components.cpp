@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <boost/pending/disjoint_sets.hpp>
 
+#include "molmesh/geometry/predicates.hpp"
+
 namespace molmesh {
 namespace {
 
@@ -52,7 +54,7 @@ std::vector<SurfaceComponent> surface_components(const SurfaceMesh& mesh) {
     const Vec3& b = mesh.points[static_cast<std::size_t>(t[1])];
     const Vec3& d = mesh.points[static_cast<std::size_t>(t[2])];
     comp.area += 0.5 * (b - a).cross(d - a).norm();
-    comp.signed_volume += (a - ref).dot((b - ref).cross(d - ref)) / 6.0;
+    comp.signed_volume += signed_volume(ref, a, b, d);
   }
   return components;
 }

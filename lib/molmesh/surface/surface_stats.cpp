@@ -7,6 +7,8 @@
 #include <utility>
 #include <vector>
 
+#include "molmesh/geometry/predicates.hpp"
+
 namespace molmesh {
 namespace {
 
@@ -45,7 +47,7 @@ SurfaceStats compute_surface_stats(const SurfaceMesh& mesh) {
     const Vec3& b = mesh.points[static_cast<std::size_t>(t[1])];
     const Vec3& c = mesh.points[static_cast<std::size_t>(t[2])];
     s.area += 0.5 * (b - a).cross(c - a).norm();
-    s.volume += (a - ref).dot((b - ref).cross(c - ref)) / 6.0;
+    s.volume += signed_volume(ref, a, b, c);
     const double angles[3] = {angle_deg(a, b, c), angle_deg(b, c, a), angle_deg(c, a, b)};
     for (double x : angles) {
       s.min_angle_deg = std::min(s.min_angle_deg, x);

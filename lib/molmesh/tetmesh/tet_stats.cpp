@@ -6,11 +6,8 @@
 #include <limits>
 #include <numbers>
 
+#include "molmesh/geometry/predicates.hpp"
 namespace molmesh {
-
-double tet_volume(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
-  return (b - a).dot((c - a).cross(d - a)) / 6.0;
-}
 
 TetStats compute_tet_stats(const TetMesh& mesh) {
   TetStats s;
@@ -37,7 +34,7 @@ TetStats compute_tet_stats(const TetMesh& mesh) {
     const Vec3& b = mesh.points[t[1]];
     const Vec3& c = mesh.points[t[2]];
     const Vec3& d = mesh.points[t[3]];
-    const double vol = tet_volume(a, b, c, d);
+    const double vol = signed_volume(a, b, c, d);
     s.min_volume = std::min(s.min_volume, vol);
     s.max_volume = std::max(s.max_volume, vol);
     if (vol <= 0.0) ++s.inverted_or_flat;

@@ -33,7 +33,4 @@ struct TetStats {
 
 TetStats compute_tet_stats(const TetMesh& mesh);
 
-// Signed volume (positive for the TetMesh orientation convention).
-double tet_volume(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d);
-
 }  // namespace molmesh
