@@ -4,16 +4,17 @@
 #include <array>
 #include <map>
 
+#include "molmesh/geometry/predicates.hpp"
+#include "molmesh/hierarchy/transfer.hpp"
+
 namespace molmesh::testing {
 namespace {
 
 int vertex_id(int n, int i, int j, int k) { return i + (n + 1) * (j + (n + 1) * k); }
 
-double signed_volume(const TetMesh& m, const Tetrahedron& t) {
-  const Vec3& a = m.points[static_cast<std::size_t>(t[0])];
-  return (m.points[static_cast<std::size_t>(t[1])] - a)
-      .cross(m.points[static_cast<std::size_t>(t[2])] - a)
-      .dot(m.points[static_cast<std::size_t>(t[3])] - a);
+double orientation(const TetMesh& m, const Tetrahedron& t) {
+  const auto P = [&](int k) -> const Vec3& { return m.points[static_cast<std::size_t>(t[k])]; };
+  return orient3d(P(0), P(1), P(2), P(3));
 }
 
 }  // namespace
@@ -43,7 +44,7 @@ TetMesh structured_cube(int n, double lo, double hi) {
             ++c[static_cast<std::size_t>(axes[static_cast<std::size_t>(s)])];
             t[static_cast<std::size_t>(s) + 1] = vertex_id(n, c[0], c[1], c[2]);
           }
-          if (signed_volume(mesh, t) < 0) std::swap(t[2], t[3]);
+          if (orientation(mesh, t) < 0) std::swap(t[2], t[3]);
           mesh.tetrahedra.push_back(t);
           mesh.cell_markers.push_back(2);
         } while (std::next_permutation(axes.begin(), axes.end()));
@@ -51,25 +52,8 @@ TetMesh structured_cube(int n, double lo, double hi) {
     }
   }
   // Boundary faces: outward faces of a positively oriented tet that occur once.
-  static constexpr int kFaces[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
-  std::map<std::array<int, 3>, std::pair<int, Triangle>> count;
-  for (const auto& t : mesh.tetrahedra) {
-    for (const auto& f : kFaces) {
-      Triangle tri{t[static_cast<std::size_t>(f[0])], t[static_cast<std::size_t>(f[1])],
-                   t[static_cast<std::size_t>(f[2])]};
-      auto key = tri;
-      std::sort(key.begin(), key.end());
-      auto& entry = count[key];
-      ++entry.first;
-      entry.second = tri;
-    }
-  }
-  for (const auto& [key, entry] : count) {
-    if (entry.first == 1) {
-      mesh.boundary_faces.push_back(entry.second);
-      mesh.boundary_face_markers.push_back(2);
-    }
-  }
+  mesh.boundary_faces = tet_mesh_boundary(mesh);
+  mesh.boundary_face_markers.assign(mesh.boundary_faces.size(), 2);
   return mesh;
 }
 

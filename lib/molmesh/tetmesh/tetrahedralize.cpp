@@ -14,6 +14,8 @@
 #include <unordered_set>
 
 #include "molmesh/core/error.hpp"
+#include "molmesh/geometry/predicates.hpp"
+#include "molmesh/geometry/tetrahedron.hpp"
 #include "molmesh/geometry/winding_number.hpp"
 #include "molmesh/tetmesh/markers.hpp"
 #include "molmesh/tetmesh/molecule_size.hpp"
@@ -329,8 +331,7 @@ TetMesh tetrahedralize(const SurfaceMesh& surface, const Atoms& atoms,
                     out.tetrahedronlist[4 * t + 2], out.tetrahedronlist[4 * t + 3]};
     std::array<int, 4> nb{out.neighborlist[4 * t], out.neighborlist[4 * t + 1],
                           out.neighborlist[4 * t + 2], out.neighborlist[4 * t + 3]};
-    const Vec3 a = point_at(tet[0]);
-    if ((point_at(tet[1]) - a).dot((point_at(tet[2]) - a).cross(point_at(tet[3]) - a)) < 0.0) {
+    if (orient3d(point_at(tet[0]), point_at(tet[1]), point_at(tet[2]), point_at(tet[3])) < 0.0) {
       std::swap(tet[2], tet[3]);
       std::swap(nb[2], nb[3]);
     }
@@ -339,8 +340,7 @@ TetMesh tetrahedralize(const SurfaceMesh& surface, const Atoms& atoms,
   }
   auto face_of = [&](const Tetrahedron& t, int k) {
     // Opposite corner k, ordered so the normal points out of the tet.
-    static constexpr int kFace[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
-    return Triangle{t[kFace[k][0]], t[kFace[k][1]], t[kFace[k][2]]};
+    return Triangle{t[kTetFaces[k][0]], t[kTetFaces[k][1]], t[kTetFaces[k][2]]};
   };
 
   // Regions: tets connected across faces that are not on an input facet. Each is classified
@@ -369,8 +369,9 @@ TetMesh tetrahedralize(const SurfaceMesh& surface, const Atoms& atoms,
     const Tetrahedron& st = tets[seed];
     const Vec3 centroid =
         (point_at(st[0]) + point_at(st[1]) + point_at(st[2]) + point_at(st[3])) / 4.0;
-    component_region.push_back(winding_number(surface.points, surface.triangles, centroid) > 0.5 ? markers::kMoleculeRegion
-                                                                       : markers::kSolventRegion);
+    component_region.push_back(winding_number(surface.points, surface.triangles, centroid) > 0.5
+                                   ? markers::kMoleculeRegion
+                                   : markers::kSolventRegion);
   }
 
   auto keep_region = [&](int region) {
