@@ -3,6 +3,8 @@
 #include <chrono>
 #include <memory>
 
+#include "molmesh/core/timing.hpp"
+
 namespace molmesh::solvers {
 
 SolveReport solve_reduced(const ReducedSystem& system, std::span<const SparseMatrix> prolongations,
@@ -37,8 +39,7 @@ SolveReport solve_reduced(const ReducedSystem& system, std::span<const SparseMat
     preconditioner = make_incomplete_cholesky(system.matrix);
     name = "incomplete Cholesky";
   }
-  const double setup =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double setup = seconds_since(start);
   x = Eigen::VectorXd::Zero(system.rhs.size());
   SolveReport report = preconditioned_cg(system.matrix, system.rhs, x, preconditioner, options.cg);
   report.setup_time_s = setup;

@@ -9,6 +9,7 @@
 #include <memory>
 
 #include "molmesh/core/error.hpp"
+#include "molmesh/core/timing.hpp"
 
 namespace molmesh::solvers {
 
@@ -74,8 +75,7 @@ SolveReport preconditioned_cg(const SparseMatrix& a, const Eigen::VectorXd& b, E
   // The recurrence residual can drift from the true one; judge by the true residual, with
   // a little slack for rounding in the recomputation itself.
   report.converged = report.relative_residual <= 10.0 * options.tolerance;
-  report.solve_time_s =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  report.solve_time_s = seconds_since(start);
   return report;
 }
 

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "molmesh/core/error.hpp"
+#include "molmesh/core/timing.hpp"
 #include "solvers/fem/dirichlet.hpp"
 #include "solvers/fem/p1_assembly.hpp"
 #include "solvers/fem/point_locator.hpp"
@@ -127,8 +128,7 @@ PoissonResult solve_solvation_energy(const TetMesh& mesh, const Atoms& atoms,
         mesh_operators[l] = coarse_operator(*coarse_meshes[l], table, options.dirichlet_markers);
       });
     }
-    const double coarse_seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - coarse_start).count();
+    const double coarse_seconds = seconds_since(coarse_start);
     Eigen::VectorXd x;
     report = solve_reduced(system, prolongations, options.solver, x, std::move(mesh_operators));
     report.setup_time_s += coarse_seconds;

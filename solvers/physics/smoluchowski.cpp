@@ -9,6 +9,7 @@
 #include <string>
 
 #include "molmesh/core/error.hpp"
+#include "molmesh/core/timing.hpp"
 #include "solvers/fem/dirichlet.hpp"
 #include "solvers/fem/p1_assembly.hpp"
 #include "solvers/physics/units.hpp"
@@ -179,8 +180,7 @@ SmoluchowskiResult solve_smoluchowski(const TetMesh& mesh, std::span<const doubl
   reporter.progress("smoluchowski: assemble", 1.0);
   reporter.progress("smoluchowski: solve", 0.0);
   Eigen::VectorXd x;
-  const double coarse_seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - coarse_start).count();
+  const double coarse_seconds = seconds_since(coarse_start);
   result.solve = solve_reduced(system, prolongations, options.solver, x, std::move(mesh_operators));
   result.solve.setup_time_s += coarse_seconds;
   reporter.progress("smoluchowski: solve", 1.0);

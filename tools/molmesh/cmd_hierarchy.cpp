@@ -11,6 +11,7 @@
 
 #include "command_registry.hpp"
 #include "molmesh/core/error.hpp"
+#include "molmesh/core/timing.hpp"
 #include "molmesh/hierarchy/build_hierarchy.hpp"
 #include "molmesh/io/hierarchy_hdf5.hpp"
 #include "molmesh/io/read_atoms.hpp"
@@ -126,8 +127,7 @@ void run(const HierarchyArgs& args, const CliContext& ctx) {
   p["molmesh_version"] = "0.1.0";
   write_hierarchy(args.output, hierarchy);
 
-  const double seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double seconds = seconds_since(start);
   if (!ctx.quiet) {
     std::fprintf(stderr, "level  T0     surface verts  volume verts     tets  bandwidth\n");
     for (std::size_t l = 0; l < hierarchy.levels.size(); ++l) {

@@ -10,6 +10,7 @@
 
 #include "command_registry.hpp"
 #include "molmesh/core/error.hpp"
+#include "molmesh/core/timing.hpp"
 #include "molmesh/io/msms.hpp"
 #include "molmesh/io/stats_json.hpp"
 #include "molmesh/io/surface_mesh_io.hpp"
@@ -43,10 +44,6 @@ struct ImproveArgs {
   MeshRepairOptions repair;
   ProcessingOptions processing = user_mesh_processing();
 };
-
-double seconds_since(Clock::time_point t) {
-  return std::chrono::duration<double>(Clock::now() - t).count();
-}
 
 SurfaceMesh read_input(const std::filesystem::path& path) {
   if (is_msms_path(path)) return read_msms(path);

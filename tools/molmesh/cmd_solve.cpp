@@ -15,6 +15,7 @@
 #include "command_registry.hpp"
 #include "molmesh/core/atomic_file.hpp"
 #include "molmesh/core/error.hpp"
+#include "molmesh/core/timing.hpp"
 #include "molmesh/io/hierarchy_hdf5.hpp"
 #include "molmesh/io/read_atoms.hpp"
 #include "molmesh/io/volume_io.hpp"
@@ -167,10 +168,6 @@ void write_json(const std::string& path, const nlohmann::json& j) {
 void store_field(const CommonArgs& a, const std::string& name, const Eigen::VectorXd& v) {
   if (a.no_fields) return;
   write_point_field(a.hierarchy, a.level, name, std::span<const double>(v.data(), v.size()));
-}
-
-double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 void run_smoluchowski(const SmoluchowskiArgs& args, const CliContext& ctx) {

@@ -5,6 +5,7 @@
 
 #include "command_registry.hpp"
 #include "molmesh/core/error.hpp"
+#include "molmesh/core/timing.hpp"
 #include "molmesh/io/read_atoms.hpp"
 #include "molmesh/io/stats_json.hpp"
 #include "molmesh/io/surface_mesh_io.hpp"
@@ -24,10 +25,6 @@ struct SurfaceArgs {
   std::string write_volume;
   SurfaceCliOptions options;
 };
-
-double seconds_since(Clock::time_point t) {
-  return std::chrono::duration<double>(Clock::now() - t).count();
-}
 
 void run(const SurfaceArgs& args, const CliContext& ctx) {
   const Reporter reporter = ctx.reporter();

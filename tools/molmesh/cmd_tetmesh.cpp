@@ -7,6 +7,7 @@
 
 #include "command_registry.hpp"
 #include "molmesh/core/error.hpp"
+#include "molmesh/core/timing.hpp"
 #include "molmesh/io/read_atoms.hpp"
 #include "molmesh/io/sphere_list.hpp"
 #include "molmesh/io/stats_json.hpp"
@@ -34,10 +35,6 @@ struct TetmeshArgs {
   double max_volume = 0.0;
   SurfaceCliOptions surface;
 };
-
-double seconds_since(Clock::time_point t) {
-  return std::chrono::duration<double>(Clock::now() - t).count();
-}
 
 nlohmann::json tet_stats_json(const TetStats& s) {
   auto keyed = [](const std::map<int, std::size_t>& m) {

@@ -5,15 +5,12 @@
 #include <string>
 
 #include "molmesh/core/error.hpp"
+#include "molmesh/core/timing.hpp"
 #include "molmesh/hierarchy/renumber.hpp"
 #include "molmesh/tetmesh/markers.hpp"
 
 namespace molmesh {
 namespace {
-
-double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
 
 bool in_any(const Vec3& p, const std::vector<Sphere>& spheres) {
   for (const auto& s : spheres) {

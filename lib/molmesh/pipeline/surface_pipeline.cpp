@@ -5,6 +5,7 @@
 #include <utility>
 
 #include "molmesh/core/error.hpp"
+#include "molmesh/core/timing.hpp"
 #include "molmesh/io/sphere_list.hpp"
 #include "molmesh/surface/components.hpp"
 #include "molmesh/surface/marching_cubes.hpp"
@@ -13,10 +14,6 @@ namespace molmesh {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
 
 // Marching cubes, cavity removal, then processing (unless raw).
 void extract_and_process(const Grid& grid, const SurfacePipelineOptions& options,

@@ -6,6 +6,7 @@
 #include <numeric>
 
 #include "molmesh/core/error.hpp"
+#include "molmesh/core/timing.hpp"
 #include "molmesh/processing/coarsen.hpp"
 #include "molmesh/processing/edge_flips.hpp"
 #include "molmesh/processing/halfedge_mesh.hpp"
@@ -30,7 +31,7 @@ class StageTimer {
     body();
     ProcessingStage stage;
     stage.name = name;
-    stage.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    stage.seconds = seconds_since(start);
     if (record_) stage.stats = compute_surface_stats(result_.mesh);
     result_.stages.push_back(std::move(stage));
   }

@@ -14,6 +14,7 @@
 #include <unordered_set>
 
 #include "molmesh/core/error.hpp"
+#include "molmesh/core/timing.hpp"
 #include "molmesh/geometry/predicates.hpp"
 #include "molmesh/geometry/tetrahedron.hpp"
 #include "molmesh/geometry/winding_number.hpp"
@@ -25,10 +26,6 @@ namespace molmesh {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point t0) {
-  return std::chrono::duration<double>(Clock::now() - t0).count();
-}
 
 struct FaceKey {
   int a, b, c;  // sorted
