@@ -12,6 +12,7 @@
 #include "command_registry.hpp"
 #include "molmesh/core/error.hpp"
 #include "molmesh/core/timing.hpp"
+#include "molmesh/core/version.hpp"
 #include "molmesh/hierarchy/build_hierarchy.hpp"
 #include "molmesh/io/hierarchy_hdf5.hpp"
 #include "molmesh/io/read_atoms.hpp"
@@ -124,7 +125,7 @@ void run(const HierarchyArgs& args, const CliContext& ctx) {
   p["size_growth"] = text(args.size_growth);
   p["renumbering"] = args.no_renumber ? "none" : "reverse Cuthill-McKee";
   if (!report.levels.empty()) p["tetgen_switches"] = report.levels.front().tetmesh.tetgen_switches;
-  p["molmesh_version"] = "0.1.0";
+  p["molmesh_version"] = version();
   write_hierarchy(args.output, hierarchy);
 
   const double seconds = seconds_since(start);

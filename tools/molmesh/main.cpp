@@ -3,16 +3,18 @@
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <exception>
+#include <string>
 
 #include "cli_context.hpp"
 #include "command_registry.hpp"
 #include "molmesh/core/error.hpp"
+#include "molmesh/core/version.hpp"
 
 int main(int argc, char** argv) {
   using namespace molmesh::cli;
   CLI::App app{"molmesh: molecules to adaptive surface and tetrahedral meshes (GAMer method)"};
   app.require_subcommand(1);
-  app.set_version_flag("--version", "molmesh 0.1.0");
+  app.set_version_flag("--version", std::string("molmesh ") + molmesh::version());
   app.fallthrough();  // lets --quiet appear after the subcommand too
   CliContext ctx;
   app.add_flag("-q,--quiet", ctx.quiet, "Do not show progress")->configurable(false);
