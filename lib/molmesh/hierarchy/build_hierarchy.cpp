@@ -10,27 +10,13 @@
 #include "molmesh/tetmesh/markers.hpp"
 
 namespace molmesh {
-namespace {
-
-bool in_any(const Vec3& p, const std::vector<Sphere>& spheres) {
-  for (const auto& s : spheres) {
-    if (s.contains(p)) return true;
-  }
-  return false;
-}
-
-}  // namespace
 
 void mark_surface(SurfaceMesh& surface, const std::vector<Sphere>& active_site) {
-  std::vector<char> inside(surface.points.size(), 0);
-  for (std::size_t v = 0; v < surface.points.size(); ++v)
-    inside[v] = in_any(surface.points[v], active_site);
   surface.face_markers.assign(surface.triangles.size(), markers::kMolecularSurface);
   surface.vertex_markers.assign(surface.points.size(), markers::kMolecularSurface);
   for (std::size_t f = 0; f < surface.triangles.size(); ++f) {
     const auto& t = surface.triangles[f];
-    if (inside[static_cast<std::size_t>(t[0])] && inside[static_cast<std::size_t>(t[1])] &&
-        inside[static_cast<std::size_t>(t[2])]) {
+    if (markers::in_active_site(surface.points, t, active_site)) {
       surface.face_markers[f] = markers::kActiveSite;
       for (int v : t) surface.vertex_markers[static_cast<std::size_t>(v)] = markers::kActiveSite;
     }

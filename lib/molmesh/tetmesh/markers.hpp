@@ -1,6 +1,10 @@
 #pragma once
 // Marker values shared by the mesher, the writers, the hierarchy and the solvers. The
 // table and its translation to MCSF boundary types is documented in docs/formats.md.
+#include <algorithm>
+#include <vector>
+
+#include "molmesh/core/geometry.hpp"
 
 namespace molmesh::markers {
 
@@ -15,6 +19,17 @@ inline constexpr int kNoMarker = 0;
 inline constexpr int kMolecularSurface = 1;
 inline constexpr int kOuterSphere = 2;
 inline constexpr int kActiveSite = 3;
+
+// The one active-site rule: triangle t of `points` is in the active site when all three
+// of its vertices lie in the union of the spheres.
+inline bool in_active_site(const std::vector<Vec3>& points, const Triangle& t,
+                           const std::vector<Sphere>& spheres) {
+  return std::all_of(t.begin(), t.end(), [&](int v) {
+    const Vec3& p = points[static_cast<std::size_t>(v)];
+    return std::any_of(spheres.begin(), spheres.end(),
+                       [&](const Sphere& s) { return s.contains(p); });
+  });
+}
 
 // A vertex on faces with different markers carries the highest-ranked one: the active site
 // wins over the molecular surface, which wins over the outer sphere. Markers outside this

@@ -208,15 +208,9 @@ TetMesh tetrahedralize(const SurfaceMesh& surface, const Atoms& atoms,
     facet.polygonlist[0].numberofvertices = 3;
     facet.polygonlist[0].vertexlist = new int[3]{t[0] + offset, t[1] + offset, t[2] + offset};
     int marker = on_sphere ? markers::kOuterSphere : markers::kMolecularSurface;
-    if (!on_sphere && !options.active_site.empty()) {
-      bool inside = true;
-      for (int k = 0; k < 3 && inside; ++k) {
-        const Vec3& p = surface.points[t[k]];
-        inside = std::any_of(options.active_site.begin(), options.active_site.end(),
-                             [&](const Sphere& s) { return s.contains(p); });
-      }
-      if (inside) marker = markers::kActiveSite;
-    }
+    if (!on_sphere && !options.active_site.empty() &&
+        markers::in_active_site(surface.points, t, options.active_site))
+      marker = markers::kActiveSite;
     in.facetmarkerlist[f] = marker;
   }
 
