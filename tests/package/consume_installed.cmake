@@ -1,0 +1,45 @@
+# CTest driver (tests/CMakeLists.txt, test "package_consumer"): installs the build tree into
+# a fresh prefix, checks the header layout, and builds and runs a consumer that finds the
+# package with find_package(molmesh). Variables: BUILD_DIR, SOURCE_DIR, WORK, OFF, CXX
+# (the compiler of the build) and optionally CXX_LAUNCHER.
+file(REMOVE_RECURSE ${WORK})
+set(prefix ${WORK}/prefix)
+execute_process(COMMAND ${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${prefix}
+  RESULT_VARIABLE status OUTPUT_QUIET)
+if(status)
+  message(FATAL_ERROR "cmake --install failed (${status})")
+endif()
+
+# Every header goes under include/molmesh/; nothing else lands in include/.
+file(GLOB top RELATIVE ${prefix}/include ${prefix}/include/*)
+if(NOT top STREQUAL "molmesh")
+  message(FATAL_ERROR "include/ holds '${top}', expected only 'molmesh'")
+endif()
+foreach(header molmesh/io/mesh_off.hpp molmesh/geometry/predicates.hpp
+    molmesh/solvers/fem/point_locator.hpp)
+  if(NOT EXISTS ${prefix}/include/${header})
+    message(FATAL_ERROR "include/${header} was not installed")
+  endif()
+endforeach()
+
+set(launcher "")
+if(CXX_LAUNCHER)
+  set(launcher -DCMAKE_CXX_COMPILER_LAUNCHER=${CXX_LAUNCHER})
+endif()
+execute_process(COMMAND ${CMAKE_COMMAND} -S ${SOURCE_DIR} -B ${WORK}/build
+  -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH=${prefix} -DCMAKE_CXX_COMPILER=${CXX} ${launcher}
+  RESULT_VARIABLE status OUTPUT_VARIABLE log ERROR_VARIABLE log)
+if(status)
+  message(FATAL_ERROR "configuring the consumer failed:\n${log}")
+endif()
+execute_process(COMMAND ${CMAKE_COMMAND} --build ${WORK}/build
+  RESULT_VARIABLE status OUTPUT_VARIABLE log ERROR_VARIABLE log)
+if(status)
+  message(FATAL_ERROR "building the consumer failed:\n${log}")
+endif()
+execute_process(COMMAND ${WORK}/build/consumer ${OFF}
+  RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE out)
+if(status OR NOT out MATCHES "^4 vertices, 4 triangles, volume 0\\.166667, centroid in tetrahedron 0")
+  message(FATAL_ERROR "the consumer printed (exit ${status}):\n${out}")
+endif()
+message(STATUS "consumer: ${out}")
