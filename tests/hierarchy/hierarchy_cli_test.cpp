@@ -14,6 +14,7 @@
 #include "molmesh/io/sha256.hpp"
 #include "molmesh/tetmesh/markers.hpp"
 #include "molmesh/tetmesh/tet_stats.hpp"
+#include "support/cli.hpp"
 
 namespace molmesh {
 namespace {
@@ -27,19 +28,18 @@ class HierarchyCli : public ::testing::Test {
     fs::remove_all(dir_);
     fs::create_directories(dir_);
     input_ = fs::path(MOLMESH_TEST_DATA_DIR) / "fas2.pqr";
-    const auto command = std::string(MOLMESH_CLI_PATH) + " hierarchy " + input_.string() +
+    const testing::CliRun run =
+        testing::run_cli("hierarchy " + input_.string() +
                          " --t0 0.1,0.3,0.5 --domain exterior --outer-radius 60 -q -o " +
-                         (dir_ / "fas2.h5").string() + " > " + (dir_ / "log.txt").string() +
-                         " 2>&1";
-    status_ = std::system(command.c_str());
+                         (dir_ / "fas2.h5").string());
+    status_ = run.exit_code;
+    log_ = run.out + run.err;
   }
-  static std::string log() {
-    std::ifstream in(dir_ / "log.txt");
-    return std::string((std::istreambuf_iterator<char>(in)), {});
-  }
+  static std::string log() { return log_; }
   static inline fs::path dir_;
   static inline fs::path input_;
   static inline int status_ = -1;
+  static inline std::string log_;
 };
 
 TEST_F(HierarchyCli, WritesAConsistentHierarchy) {
@@ -107,19 +107,16 @@ TEST_F(HierarchyCli, SolverFieldsAreAddedAndInfoSummarises) {
   for (std::size_t i = 0; i < values.size(); ++i) values[i] = h.levels[2].volume.points[i].norm();
   write_point_field(copy, 2, "distance", values);
   EXPECT_EQ(read_point_field(copy, 2, "distance"), values);
-  const auto command = std::string(MOLMESH_CLI_PATH) + " info " + copy.string() + " > " +
-                       (dir_ / "info.txt").string() + " 2>&1";
-  ASSERT_EQ(std::system(command.c_str()), 0);
-  std::ifstream in(dir_ / "info.txt");
-  const std::string info((std::istreambuf_iterator<char>(in)), {});
+  const testing::CliRun run = testing::run_cli("info " + copy.string());
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const std::string info = run.out + run.err;
   EXPECT_NE(info.find("3 levels"), std::string::npos) << info;
   EXPECT_NE(info.find("level 2 point fields: distance"), std::string::npos) << info;
   EXPECT_NE(info.find("fas2.pqr"), std::string::npos) << info;
   // Not a hierarchy: exit code 3 (input error).
-  const auto bad = std::string(MOLMESH_CLI_PATH) + " info " +
-                   (fs::path(MOLMESH_TEST_DATA_DIR) / "fas2.pqr").string() + " > /dev/null 2>&1";
-  const int status = std::system(bad.c_str());
-  EXPECT_EQ(WEXITSTATUS(status), 3);
+  EXPECT_EQ(
+      testing::run_cli("info " + (fs::path(MOLMESH_TEST_DATA_DIR) / "fas2.pqr").string()).exit_code,
+      3);
 }
 
 }  // namespace

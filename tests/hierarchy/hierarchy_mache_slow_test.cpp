@@ -11,6 +11,7 @@
 #include "hierarchy/hierarchy_support.hpp"
 #include "molmesh/io/hierarchy_hdf5.hpp"
 #include "molmesh/tetmesh/tet_stats.hpp"
+#include "support/cli.hpp"
 
 namespace molmesh {
 namespace {
@@ -18,18 +19,16 @@ namespace {
 namespace fs = std::filesystem;
 
 TEST(HierarchyMache, FourLevelsExterior) {
-  const auto dir = fs::temp_directory_path() / ("molmesh_hierarchy_mache_" + std::to_string(::getpid()));
+  const auto dir =
+      fs::temp_directory_path() / ("molmesh_hierarchy_mache_" + std::to_string(::getpid()));
   fs::remove_all(dir);
   fs::create_directories(dir);
   const auto h5 = dir / "mache.h5";
-  const auto command = std::string(MOLMESH_CLI_PATH) + " hierarchy " +
-                       (fs::path(MOLMESH_TEST_DATA_DIR) / "mache.pqr").string() +
-                       " --domain exterior -o " + h5.string() + " > " + (dir / "log.txt").string() +
-                       " 2>&1";
-  const int status = std::system(command.c_str());
-  std::ifstream log_in(dir / "log.txt");
-  const std::string log((std::istreambuf_iterator<char>(log_in)), {});
-  ASSERT_EQ(status, 0) << log;
+  const testing::CliRun run =
+      testing::run_cli("hierarchy " + (fs::path(MOLMESH_TEST_DATA_DIR) / "mache.pqr").string() +
+                       " --domain exterior -o " + h5.string());
+  const std::string log = run.out + run.err;
+  ASSERT_EQ(run.exit_code, 0) << log;
   const Hierarchy h = read_hierarchy(h5);
   ASSERT_EQ(h.levels.size(), 4u);
   for (std::size_t l = 1; l < h.levels.size(); ++l) {

@@ -3,7 +3,6 @@
 // must give the known shape, and the surface command must accept both and --blur fast.
 #include <gtest/gtest.h>
 #include <unistd.h>
-#include <sys/wait.h>
 
 #include <cmath>
 #include <cstdint>
@@ -23,6 +22,7 @@
 #include "molmesh/pipeline/surface_pipeline.hpp"
 #include "molmesh/processing/dislocation.hpp"
 #include "molmesh/surface/surface_stats.hpp"
+#include "support/cli.hpp"
 
 namespace molmesh {
 namespace {
@@ -30,21 +30,16 @@ namespace {
 namespace fs = std::filesystem;
 
 fs::path scratch() {
-  const auto dir = fs::temp_directory_path() / ("molmesh_inputs_volume_" + std::to_string(::getpid()));
+  const auto dir =
+      fs::temp_directory_path() / ("molmesh_inputs_volume_" + std::to_string(::getpid()));
   fs::create_directories(dir);
   return dir;
 }
 
 int molmesh(const std::string& args, std::string* err = nullptr) {
-  const fs::path e = scratch() / "stderr.txt";
-  const int status = std::system(
-      (std::string(MOLMESH_CLI_PATH) + " --quiet " + args + " 2> " + e.string()).c_str());
-  if (err) {
-    std::stringstream ss;
-    ss << std::ifstream(e).rdbuf();
-    *err = ss.str();
-  }
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  const testing::CliRun run = testing::run_cli("--quiet " + args);
+  if (err) *err = run.err;
+  return run.exit_code;
 }
 
 nlohmann::json read_json(const fs::path& p) {

@@ -1,6 +1,5 @@
 // The `surface` and `stats` commands, run as a user would.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
 #include <cstdio>
 #include <cstdlib>
@@ -10,21 +9,16 @@
 #include <set>
 #include <string>
 
+#include "support/cli.hpp"
+
 namespace {
 
 namespace fs = std::filesystem;
 
 int run(const std::string& args, std::string* out = nullptr) {
-  const std::string cmd = std::string(MOLMESH_CLI_PATH) + " " + args + " 2>/dev/null";
-  FILE* pipe = popen(cmd.c_str(), "r");
-  if (!pipe) return -1;
-  std::string text;
-  char buf[4096];
-  std::size_t n;
-  while ((n = fread(buf, 1, sizeof buf, pipe)) > 0) text.append(buf, n);
-  const int status = pclose(pipe);
-  if (out) *out = text;
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  const auto r = molmesh::testing::run_cli(args);
+  if (out) *out = r.out;
+  return r.exit_code;
 }
 
 struct TempDir {

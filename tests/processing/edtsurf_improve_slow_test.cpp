@@ -3,8 +3,8 @@
 // the paper's Fig. 10 numbers: closed and manifold, min angle >= 22°, max <= 130°, >= 88% of
 // angles in [40°, 80°], at least 2x fewer vertices, mean dislocation <= 0.05 Å.
 #include <gtest/gtest.h>
-#include <unistd.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <cstdio>
 #include <cstdlib>
@@ -14,6 +14,7 @@
 #include <string>
 
 #include "molmesh/io/read_atoms.hpp"
+#include "support/cli.hpp"
 
 namespace molmesh {
 namespace {
@@ -49,7 +50,8 @@ void write_heavy_atom_pdb(const Atoms& atoms, const fs::path& path) {
 }
 
 TEST(EdtsurfImprove, MacheMeetsThePaperFloors) {
-  const fs::path dir = fs::temp_directory_path() / ("molmesh_inputs_edtsurf_" + std::to_string(::getpid()));
+  const fs::path dir =
+      fs::temp_directory_path() / ("molmesh_inputs_edtsurf_" + std::to_string(::getpid()));
   fs::create_directories(dir);
   write_heavy_atom_pdb(read_atoms(MOLMESH_TEST_DATA_DIR "/mache.pqr"), dir / "mache.pdb");
   ASSERT_EQ(
@@ -62,9 +64,9 @@ TEST(EdtsurfImprove, MacheMeetsThePaperFloors) {
 
   const fs::path out = dir / "mache_improved.off";
   const fs::path stats = dir / "mache_improved.json";
-  ASSERT_EQ(shell(std::string(MOLMESH_CLI_PATH) + " --quiet improve " + ply.string() + " -o " +
-                  out.string() + " --stats " + stats.string()),
-            0);
+  const testing::CliRun run = testing::run_cli("--quiet improve " + ply.string() + " -o " +
+                                               out.string() + " --stats " + stats.string());
+  ASSERT_EQ(run.exit_code, 0) << run.err;
   std::ifstream in(stats);
   const nlohmann::json j = nlohmann::json::parse(in);
   const nlohmann::json& input = j["input"]["input_surface"];

@@ -2,7 +2,6 @@
 // write meshes: an STL triangle soup, an MSMS pair, and an open mesh that must be refused.
 #include <gtest/gtest.h>
 #include <unistd.h>
-#include <sys/wait.h>
 
 #include <cstdlib>
 #include <filesystem>
@@ -17,6 +16,7 @@
 #include "molmesh/surface/marching_cubes.hpp"
 #include "molmesh/surface/surface_stats.hpp"
 #include "molmesh/volume/gaussian_blur.hpp"
+#include "support/cli.hpp"
 
 namespace molmesh {
 namespace {
@@ -24,29 +24,15 @@ namespace {
 namespace fs = std::filesystem;
 
 fs::path scratch() {
-  const auto dir = fs::temp_directory_path() / ("molmesh_inputs_improve_cli_" + std::to_string(::getpid()));
+  const auto dir =
+      fs::temp_directory_path() / ("molmesh_inputs_improve_cli_" + std::to_string(::getpid()));
   fs::create_directories(dir);
   return dir;
 }
 
-struct CliRun {
-  int code = -1;
-  std::string err;
-};
+using testing::CliRun;
 
-CliRun molmesh(const std::string& args) {
-  const fs::path err = scratch() / "stderr.txt";
-  const std::string cmd =
-      std::string(MOLMESH_CLI_PATH) + " --quiet " + args + " 2> " + err.string();
-  const int status = std::system(cmd.c_str());
-  CliRun r;
-  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  std::ifstream in(err);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  r.err = ss.str();
-  return r;
-}
+CliRun molmesh(const std::string& args) { return testing::run_cli("--quiet " + args); }
 
 nlohmann::json read_json(const fs::path& p) {
   std::ifstream in(p);
@@ -66,7 +52,7 @@ TEST(ImproveCli, StlSoupComesOutClosedManifoldAndBetter) {
   write_surface_mesh(in, raw_1a1p());
   const CliRun r =
       molmesh("improve " + in.string() + " -o " + out.string() + " --stats " + stats.string());
-  ASSERT_EQ(r.code, 0) << r.err;
+  ASSERT_EQ(r.exit_code, 0) << r.err;
   const nlohmann::json j = read_json(stats);
   EXPECT_TRUE(j["closed"].get<bool>());
   EXPECT_TRUE(j["manifold"].get<bool>());
@@ -92,7 +78,7 @@ TEST(ImproveCli, MsmsPairInvertedInputIsTurnedOutward) {
   const fs::path stats = scratch() / "1a1p_msms_improved.json";
   const CliRun r = molmesh("improve " + stem.string() + ".vert -o " + out.string() +
                            " --no-coarsen --stats " + stats.string());
-  ASSERT_EQ(r.code, 0) << r.err;
+  ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.err.find("components turned outward"), std::string::npos) << r.err;
   const nlohmann::json j = read_json(stats);
   EXPECT_EQ(j["input"]["repair"]["reoriented_components"].get<int>(), 1);
@@ -109,7 +95,7 @@ TEST(ImproveCli, OpenMeshIsRefusedWithCountsAndLocations) {
   const fs::path out = scratch() / "open_improved.off";
   fs::remove(out);
   const CliRun r = molmesh("improve " + in.string() + " -o " + out.string());
-  EXPECT_EQ(r.code, 1) << r.err;
+  EXPECT_EQ(r.exit_code, 1) << r.err;
   EXPECT_NE(r.err.find("2 holes (6 edges used by only one triangle), e.g. at ("), std::string::npos)
       << r.err;
   EXPECT_FALSE(fs::exists(out));
@@ -119,7 +105,7 @@ TEST(ImproveCli, UnknownFormatIsAnInputError) {
   const fs::path in = scratch() / "mesh.xyz";
   std::ofstream(in) << "1 2 3\n";
   const CliRun r = molmesh("improve " + in.string() + " -o " + (scratch() / "x.off").string());
-  EXPECT_EQ(r.code, 3) << r.err;
+  EXPECT_EQ(r.exit_code, 3) << r.err;
 }
 
 }  // namespace

@@ -10,6 +10,8 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "support/cli.hpp"
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -27,8 +29,8 @@ void write_ion(const fs::path& path, double radius) {
 }
 
 nlohmann::json run(const std::string& args, const fs::path& json) {
-  const std::string command = std::string(MOLMESH_CLI_PATH) + " -q " + args;
-  EXPECT_EQ(std::system(command.c_str()), 0) << command;
+  const molmesh::testing::CliRun r = molmesh::testing::run_cli("-q " + args);
+  EXPECT_EQ(r.exit_code, 0) << args << "\n" << r.err;
   std::ifstream in(json);
   return nlohmann::json::parse(in);
 }
@@ -37,11 +39,12 @@ TEST(SolverPipeline, AbsorbingSphereRateFromTheTetGenHierarchy) {
   const fs::path dir = work_dir();
   write_ion(dir / "sphere10.pqr", 10.0);
   const fs::path h5 = dir / "sphere10.h5";
-  const std::string mesh = std::string(MOLMESH_CLI_PATH) + " -q hierarchy " +
-                           (dir / "sphere10.pqr").string() + " -o " + h5.string() +
-                           " --domain exterior --outer-radius 100 --size-factor 0.5 "
-                           "--t0 0.1,0.5";
-  ASSERT_EQ(std::system(mesh.c_str()), 0);
+  ASSERT_EQ(molmesh::testing::run_cli("-q hierarchy " + (dir / "sphere10.pqr").string() + " -o " +
+                                      h5.string() +
+                                      " --domain exterior --outer-radius 100 --size-factor 0.5 "
+                                      "--t0 0.1,0.5")
+                .exit_code,
+            0);
   const auto j = run("solve smoluchowski " + h5.string() + " --diffusion 1e-5 --json " +
                          (dir / "rate.json").string(),
                      dir / "rate.json");
@@ -61,10 +64,11 @@ TEST(SolverPipeline, BornIonFromTheTetGenHierarchy) {
   const fs::path dir = work_dir();
   write_ion(dir / "born3.pqr", 3.0);
   const fs::path h5 = dir / "born3.h5";
-  const std::string mesh = std::string(MOLMESH_CLI_PATH) + " -q hierarchy " +
-                           (dir / "born3.pqr").string() + " -o " + h5.string() +
-                           " --domain full --outer-radius 20 --max-radius-edge 1.2 --t0 0.1,0.5";
-  ASSERT_EQ(std::system(mesh.c_str()), 0);
+  ASSERT_EQ(molmesh::testing::run_cli(
+                "-q hierarchy " + (dir / "born3.pqr").string() + " -o " + h5.string() +
+                " --domain full --outer-radius 20 --max-radius-edge 1.2 --t0 0.1,0.5")
+                .exit_code,
+            0);
   const auto j = run("solve poisson " + h5.string() + " --pqr " + (dir / "born3.pqr").string() +
                          " --json " + (dir / "born.json").string(),
                      dir / "born.json");

@@ -15,6 +15,7 @@
 #include "molmesh/io/mcsf.hpp"
 #include "molmesh/io/surface_mesh_io.hpp"
 #include "molmesh/tetmesh/outer_sphere.hpp"
+#include "support/cli.hpp"
 
 namespace molmesh {
 namespace {
@@ -43,7 +44,8 @@ TEST(ApbsBorn, FullMeshGivesBornEnergyWithin3Percent) {
   if (std::system("command -v apbs > /dev/null 2>&1") != 0) {
     FAIL() << "apbs is not installed (Debian package apbs)";
   }
-  const fs::path dir = fs::temp_directory_path() / ("molmesh_apbs_born_" + std::to_string(::getpid()));
+  const fs::path dir =
+      fs::temp_directory_path() / ("molmesh_apbs_born_" + std::to_string(::getpid()));
   fs::remove_all(dir);
   fs::create_directories(dir);
 
@@ -55,10 +57,11 @@ TEST(ApbsBorn, FullMeshGivesBornEnergyWithin3Percent) {
     std::ofstream pqr(dir / "ion.pqr");
     pqr << "ATOM      1  I   ION     1       0.000   0.000   0.000  1.00  3.00\n";
   }
-  const std::string mesh_cmd = std::string("cd '") + dir.string() + "' && '" + MOLMESH_CLI_PATH +
-                               "' -q tetmesh ion_surface.off --domain full --outer-radius 20 "
-                               "--sphere-subdivisions 2 -o mesh.m --stats mesh.json";
-  ASSERT_EQ(std::system(mesh_cmd.c_str()), 0) << mesh_cmd;
+  const testing::CliRun run =
+      testing::run_cli_in(dir.string(),
+                          "-q tetmesh ion_surface.off --domain full --outer-radius 20 "
+                          "--sphere-subdivisions 2 -o mesh.m --stats mesh.json");
+  ASSERT_EQ(run.exit_code, 0) << run.err;
   const TetMesh mesh = read_mcsf(dir / "mesh.m");
   EXPECT_GT(mesh.points.size(), 300u);
   EXPECT_LT(mesh.points.size(), 2500u);  // APBS refines ~64x on load

@@ -12,21 +12,18 @@
 #include "molmesh/io/mcsf.hpp"
 #include "molmesh/io/surface_mesh_io.hpp"
 #include "molmesh/tetmesh/outer_sphere.hpp"
+#include "support/cli.hpp"
 
 namespace molmesh {
 namespace {
 
 namespace fs = std::filesystem;
 
-int run(const std::string& args) {
-  const std::string cmd =
-      std::string("'") + MOLMESH_CLI_PATH + "' -q " + args + " > /dev/null 2>&1";
-  const int status = std::system(cmd.c_str());
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
+int run(const std::string& args) { return testing::run_cli("-q " + args).exit_code; }
 
 TEST(CliTetmesh, SurfaceFileToEveryFormatWithStats) {
-  const fs::path dir = fs::temp_directory_path() / ("molmesh_cli_tetmesh_" + std::to_string(::getpid()));
+  const fs::path dir =
+      fs::temp_directory_path() / ("molmesh_cli_tetmesh_" + std::to_string(::getpid()));
   fs::create_directories(dir);
   const std::string surf = (dir / "ion.off").string();
   write_surface_mesh(surf, icosphere(Vec3(1, 1, 1), 3.0, 2));
