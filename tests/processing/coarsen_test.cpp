@@ -77,7 +77,7 @@ TEST(Coarsen, KeepSpheresProtectTheirVertices) {
 }
 
 TEST(Coarsen, SmallThresholdDeletesNothingAndLargeOneIsSafeOnASphere) {
-  const SurfaceMesh sphere = test::icosphere(4, 10.0);
+  const SurfaceMesh sphere = icosphere(Vec3::Zero(), 10.0, 4);
   CoarsenOptions none;
   none.t0 = 1e-6;
   EXPECT_EQ(coarsen(sphere, none).removed, 0u);
@@ -95,8 +95,8 @@ TEST(Coarsen, SmallThresholdDeletesNothingAndLargeOneIsSafeOnASphere) {
 }
 
 TEST(Coarsen, NeverShrinksAComponentBelowATetrahedron) {
-  SurfaceMesh two = test::icosphere(1, 1.0);
-  const SurfaceMesh other = test::icosphere(0, 1.0);
+  SurfaceMesh two = icosphere(Vec3::Zero(), 1.0, 1);
+  const SurfaceMesh other = icosphere(Vec3::Zero(), 1.0, 0);
   const int offset = static_cast<int>(two.points.size());
   for (const Vec3& p : other.points) two.points.push_back(p + Vec3(5, 0, 0));
   for (const Triangle& t : other.triangles) {
@@ -114,7 +114,7 @@ TEST(Coarsen, NeverShrinksAComponentBelowATetrahedron) {
 }
 
 TEST(Coarsen, RejectsBadOptionsAndInput) {
-  const SurfaceMesh sphere = test::icosphere(1);
+  const SurfaceMesh sphere = icosphere(Vec3::Zero(), 1.0, 1);
   CoarsenOptions bad;
   bad.rings = 0;
   EXPECT_THROW(coarsen(sphere, bad), Error);

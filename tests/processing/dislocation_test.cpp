@@ -14,7 +14,7 @@ namespace molmesh {
 namespace {
 
 TEST(TriangleBvh, NearestMatchesBruteForce) {
-  const SurfaceMesh sphere = improve_test::icosphere(3, 5.0);
+  const SurfaceMesh sphere = icosphere(Vec3::Zero(), 5.0, 3);
   const TriangleBvh bvh(sphere);
   std::mt19937 rng(11);
   std::uniform_real_distribution<double> u(-8, 8);
@@ -31,7 +31,7 @@ TEST(TriangleBvh, NearestMatchesBruteForce) {
 }
 
 TEST(Dislocation, ScaledSphereIsOffsetByTheScale) {
-  const SurfaceMesh reference = improve_test::icosphere(4, 10.0);
+  const SurfaceMesh reference = icosphere(Vec3::Zero(), 10.0, 4);
   SurfaceMesh moved = reference;
   for (Vec3& p : moved.points) p *= 1.01;  // 0.1 Å outwards: vertices are 0.1 Å off planes
   const Dislocation d = measure_dislocation(moved, reference);
@@ -41,7 +41,7 @@ TEST(Dislocation, ScaledSphereIsOffsetByTheScale) {
   EXPECT_EQ(self.max, 0.0);
   // Vertices of a coarser sphere lie on the sphere, hence outside the fine polyhedron's
   // chords: distance positive but below the fine mesh's sagitta.
-  SurfaceMesh coarse_sphere = improve_test::icosphere(2, 10.0);
+  SurfaceMesh coarse_sphere = icosphere(Vec3::Zero(), 10.0, 2);
   const Eigen::Matrix3d rotation = Eigen::AngleAxisd(0.3, Vec3(1, 2, 3).normalized()).matrix();
   for (Vec3& p : coarse_sphere.points) p = rotation * p;
   const Dislocation coarse = measure_dislocation(coarse_sphere, reference);
@@ -50,12 +50,12 @@ TEST(Dislocation, ScaledSphereIsOffsetByTheScale) {
 }
 
 TEST(SelfIntersection, CleanSphereHasNone) {
-  EXPECT_EQ(count_self_intersections(improve_test::icosphere(3, 1.0)), 0u);
+  EXPECT_EQ(count_self_intersections(icosphere(Vec3::Zero(), 1.0, 3)), 0u);
 }
 
 TEST(SelfIntersection, FindsTwoInterpenetratingSpheres) {
-  SurfaceMesh a = improve_test::icosphere(2, 1.0);
-  const SurfaceMesh b = improve_test::icosphere(2, 1.0, Vec3(1.2, 0.1, 0.05));
+  SurfaceMesh a = icosphere(Vec3::Zero(), 1.0, 2);
+  const SurfaceMesh b = icosphere(Vec3(1.2, 0.1, 0.05), 1.0, 2);
   const int offset = static_cast<int>(a.points.size());
   a.points.insert(a.points.end(), b.points.begin(), b.points.end());
   for (Triangle t : b.triangles) {
@@ -66,7 +66,7 @@ TEST(SelfIntersection, FindsTwoInterpenetratingSpheres) {
 }
 
 TEST(SelfIntersection, FindsAVertexPushedThroughTheOppositeSide) {
-  SurfaceMesh sphere = improve_test::icosphere(2, 1.0);
+  SurfaceMesh sphere = icosphere(Vec3::Zero(), 1.0, 2);
   sphere.points[0] = -1.3 * sphere.points[0];  // a spike through the far side
   EXPECT_GT(count_self_intersections(sphere), 0u);
 }

@@ -16,7 +16,7 @@ namespace {
 
 // Tangential jitter makes a sphere mesh with poor angles (shape kept, connectivity bad).
 SurfaceMesh jittered_sphere(int subdivisions, double amount, unsigned seed) {
-  SurfaceMesh m = test::icosphere(subdivisions, 5.0);
+  SurfaceMesh m = icosphere(Vec3::Zero(), 5.0, subdivisions);
   std::mt19937 rng(seed);
   std::uniform_real_distribution<double> u(-amount, amount);
   for (Vec3& p : m.points) p = 5.0 * (p + Vec3(u(rng), u(rng), u(rng))).normalized();

@@ -11,7 +11,7 @@ namespace molmesh {
 namespace {
 
 TEST(HalfedgeMesh, BuildsAndRoundTripsAnIcosphere) {
-  const SurfaceMesh sphere = test::icosphere(2);
+  const SurfaceMesh sphere = icosphere(Vec3::Zero(), 1.0, 2);
   HalfedgeMesh mesh(sphere);
   EXPECT_NO_THROW(mesh.validate());
   EXPECT_EQ(mesh.vertex_count(), 162);
@@ -25,7 +25,7 @@ TEST(HalfedgeMesh, BuildsAndRoundTripsAnIcosphere) {
 }
 
 TEST(HalfedgeMesh, OneRingIsOrderedCounterClockwise) {
-  const SurfaceMesh sphere = test::icosphere(1);
+  const SurfaceMesh sphere = icosphere(Vec3::Zero(), 1.0, 1);
   HalfedgeMesh mesh(sphere);
   std::vector<int> ring;
   for (int v = 0; v < mesh.vertex_capacity(); ++v) {
@@ -41,7 +41,7 @@ TEST(HalfedgeMesh, OneRingIsOrderedCounterClockwise) {
 }
 
 TEST(HalfedgeMesh, KRingGrowsByDistance) {
-  HalfedgeMesh mesh(test::icosphere(3));
+  HalfedgeMesh mesh(icosphere(Vec3::Zero(), 1.0, 3));
   RingScratch scratch;
   std::vector<int> one, two;
   mesh.k_ring(0, 1, scratch, one);
@@ -53,11 +53,11 @@ TEST(HalfedgeMesh, KRingGrowsByDistance) {
 }
 
 TEST(HalfedgeMesh, RejectsOpenAndNonManifoldInput) {
-  SurfaceMesh open = test::icosphere(1);
+  SurfaceMesh open = icosphere(Vec3::Zero(), 1.0, 1);
   open.triangles.pop_back();
   EXPECT_THROW(HalfedgeMesh{open}, Error);
 
-  SurfaceMesh flipped = test::icosphere(1);
+  SurfaceMesh flipped = icosphere(Vec3::Zero(), 1.0, 1);
   std::swap(flipped.triangles[3][1], flipped.triangles[3][2]);
   EXPECT_THROW(HalfedgeMesh{flipped}, Error);
 
@@ -68,13 +68,13 @@ TEST(HalfedgeMesh, RejectsOpenAndNonManifoldInput) {
                        {0, 4, 5}, {0, 6, 4}, {0, 5, 6}, {4, 6, 5}};
   EXPECT_THROW(HalfedgeMesh{pinched}, Error);
 
-  SurfaceMesh bad_index = test::icosphere(0);
+  SurfaceMesh bad_index = icosphere(Vec3::Zero(), 1.0, 0);
   bad_index.triangles[0][0] = 99;
   EXPECT_THROW(HalfedgeMesh{bad_index}, Error);
 }
 
 TEST(HalfedgeMesh, FlipKeepsInvariantsAndRefusesDuplicateEdges) {
-  HalfedgeMesh mesh(test::icosphere(2));
+  HalfedgeMesh mesh(icosphere(Vec3::Zero(), 1.0, 2));
   const int h = 0;
   const int c = mesh.head(HalfedgeMesh::next(h));
   const int d = mesh.head(HalfedgeMesh::next(mesh.twin(h)));
@@ -101,7 +101,7 @@ TEST(HalfedgeMesh, FlipKeepsInvariantsAndRefusesDuplicateEdges) {
 }
 
 TEST(HalfedgeMesh, RemoveVertexFillsTheHoleAndCompacts) {
-  const SurfaceMesh sphere = test::icosphere(2);
+  const SurfaceMesh sphere = icosphere(Vec3::Zero(), 1.0, 2);
   HalfedgeMesh mesh(sphere);
   const int v = 100;
   std::vector<int> ring;

@@ -14,7 +14,7 @@ namespace molmesh {
 namespace {
 
 SurfaceMesh jittered_sphere(double amount, unsigned seed) {
-  SurfaceMesh mesh = improve_test::icosphere(3, 10.0);
+  SurfaceMesh mesh = icosphere(Vec3::Zero(), 10.0, 3);
   std::mt19937 rng(seed);
   std::uniform_real_distribution<double> u(-amount, amount);
   // Tangential jitter only, so the surface is still the sphere but the angles are poor.

@@ -19,7 +19,7 @@ double radial_rms(const SurfaceMesh& mesh, double r) {
 }
 
 SurfaceMesh noisy_sphere(unsigned seed) {
-  SurfaceMesh mesh = improve_test::icosphere(3, 10.0);
+  SurfaceMesh mesh = icosphere(Vec3::Zero(), 10.0, 3);
   std::mt19937 rng(seed);
   std::normal_distribution<double> g(0.0, 0.08);  // 8% of the ~0.9 Å edge length
   for (Vec3& p : mesh.points) p *= 1.0 + g(rng) / 10.0;

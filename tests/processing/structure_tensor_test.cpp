@@ -35,7 +35,7 @@ TEST(StructureTensor, RidgeHasTwoLargeEigenvalues) {
 }
 
 TEST(StructureTensor, WholeSphereHasThreeEqualEigenvalues) {
-  const SurfaceMesh sphere = improve_test::icosphere(3);
+  const SurfaceMesh sphere = icosphere(Vec3::Zero(), 1.0, 3);
   const std::vector<Vec3> normals = vertex_normals(sphere);
   const StructureTensor t = structure_tensor_of_normals(normals);
   EXPECT_NEAR(t.eigenvalues[1], 1.0, 1e-6);
@@ -73,7 +73,7 @@ TEST(StructureTensor, PerVertexOnSphereAndPlane) {
     EXPECT_NEAR(std::abs(t.eigenvectors(2, 0)), 1.0, 1e-12);
   }
   // On a sphere, the 2-ring tensor is plane-like but with λ2 ≈ λ3 > 0 (isotropic spread).
-  const SurfaceMesh sphere = improve_test::icosphere(3);
+  const SurfaceMesh sphere = icosphere(Vec3::Zero(), 1.0, 3);
   const std::vector<Vec3> normals = vertex_normals(sphere);
   const auto tensors = structure_tensors(sphere, 2);
   for (std::size_t v = 0; v < sphere.points.size(); ++v) {
@@ -95,7 +95,7 @@ TEST(VertexRings, OrderedOneRingIsCounterClockwiseFan) {
     EXPECT_EQ((b - 1), (a - 1 + 1) % 6);  // rim indices increase counter-clockwise
   }
   EXPECT_TRUE(rings.of(1).empty());  // boundary vertex: no closed fan
-  const SurfaceMesh sphere = improve_test::icosphere(2);
+  const SurfaceMesh sphere = icosphere(Vec3::Zero(), 1.0, 2);
   const auto sphere_rings = ordered_one_rings(sphere, vertex_faces(sphere));
   for (std::size_t v = 0; v < sphere.points.size(); ++v) {
     const auto r = sphere_rings.of(v);

@@ -1,6 +1,6 @@
 #pragma once
-// Small closed meshes built in code for the processing tests: an icosphere (smooth, uniform)
-// and a finely gridded box (flat faces meeting at sharp 90° ridges).
+// Small closed meshes built in code for the processing tests: a finely gridded box (flat
+// faces meeting at sharp 90° ridges); the icosphere is the library's (tetmesh/outer_sphere).
 #include <Eigen/Geometry>
 #include <array>
 #include <cmath>
@@ -10,44 +10,9 @@
 #include <vector>
 
 #include "molmesh/surface/surface_mesh.hpp"
+#include "molmesh/tetmesh/outer_sphere.hpp"  // icosphere
 
 namespace molmesh::test {
-
-inline SurfaceMesh icosphere(int subdivisions, double radius = 1.0) {
-  const double t = (1.0 + std::sqrt(5.0)) / 2.0;
-  SurfaceMesh m;
-  m.points = {{-1, t, 0},  {1, t, 0},  {-1, -t, 0}, {1, -t, 0}, {0, -1, t},  {0, 1, t},
-              {0, -1, -t}, {0, 1, -t}, {t, 0, -1},  {t, 0, 1},  {-t, 0, -1}, {-t, 0, 1}};
-  m.triangles = {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11},
-                 {1, 5, 9},  {5, 11, 4}, {11, 10, 2}, {10, 7, 6}, {7, 1, 8},
-                 {3, 9, 4},  {3, 4, 2},  {3, 2, 6},   {3, 6, 8},  {3, 8, 9},
-                 {4, 9, 5},  {2, 4, 11}, {6, 2, 10},  {8, 6, 7},  {9, 8, 1}};
-  for (int s = 0; s < subdivisions; ++s) {
-    std::map<std::pair<int, int>, int> mid;
-    auto midpoint = [&](int a, int b) {
-      const auto key = std::minmax(a, b);
-      auto it = mid.find(key);
-      if (it != mid.end()) return it->second;
-      m.points.push_back(0.5 * (m.points[a] + m.points[b]));
-      const int id = static_cast<int>(m.points.size()) - 1;
-      mid.emplace(key, id);
-      return id;
-    };
-    std::vector<Triangle> next;
-    for (const Triangle& tri : m.triangles) {
-      const int a = midpoint(tri[0], tri[1]);
-      const int b = midpoint(tri[1], tri[2]);
-      const int c = midpoint(tri[2], tri[0]);
-      next.push_back({tri[0], a, c});
-      next.push_back({tri[1], b, a});
-      next.push_back({tri[2], c, b});
-      next.push_back({a, b, c});
-    }
-    m.triangles = std::move(next);
-  }
-  for (Vec3& p : m.points) p = radius * p.normalized();
-  return m;
-}
 
 // Axis-aligned box [0,size]^3 with every face an n×n grid of squares split into two
 // triangles, alternating the diagonal so valences stay near 6. Outward orientation.
