@@ -15,12 +15,28 @@ file(GLOB top RELATIVE ${prefix}/include ${prefix}/include/*)
 if(NOT top STREQUAL "molmesh")
   message(FATAL_ERROR "include/ holds '${top}', expected only 'molmesh'")
 endif()
-foreach(header molmesh/io/mesh_off.hpp molmesh/geometry/predicates.hpp
+foreach(header molmesh/io/surface_mesh_io.hpp molmesh/geometry/predicates.hpp
     molmesh/solvers/fem/point_locator.hpp)
   if(NOT EXISTS ${prefix}/include/${header})
     message(FATAL_ERROR "include/${header} was not installed")
   endif()
 endforeach()
+
+# Public headers include only public headers: every "molmesh/..." include of an installed
+# header is installed too (internal headers stay in the source tree, lib/CMakeLists.txt).
+file(GLOB_RECURSE installed RELATIVE ${prefix}/include ${prefix}/include/molmesh/*.hpp)
+foreach(header ${installed})
+  file(STRINGS ${prefix}/include/${header} includes REGEX "^#include \"(molmesh|solvers)/")
+  foreach(line ${includes})
+    string(REGEX REPLACE "^#include \"([^\"]+)\".*" "\\1" included "${line}")
+    if(NOT EXISTS ${prefix}/include/${included} AND NOT EXISTS ${prefix}/include/molmesh/${included})
+      message(FATAL_ERROR "installed ${header} includes ${included}, which is not installed")
+    endif()
+  endforeach()
+endforeach()
+if(EXISTS ${prefix}/include/molmesh/processing/halfedge_mesh.hpp)
+  message(FATAL_ERROR "internal header processing/halfedge_mesh.hpp was installed")
+endif()
 
 set(launcher "")
 if(CXX_LAUNCHER)

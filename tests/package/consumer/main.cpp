@@ -2,19 +2,14 @@
 // centroid in a one-tetrahedron mesh with the solvers' point locator: enough to need
 // headers from include/molmesh/ (library and solvers) and to link the installed archives.
 #include <cstdio>
-#include <fstream>
-#include <sstream>
 
 #include "molmesh/geometry/predicates.hpp"
-#include "molmesh/io/mesh_off.hpp"
+#include "molmesh/io/surface_mesh_io.hpp"
 #include "solvers/fem/point_locator.hpp"
 
 int main(int argc, char** argv) {
   if (argc != 2) return 2;
-  std::ifstream in(argv[1]);
-  std::stringstream text;
-  text << in.rdbuf();
-  const molmesh::SurfaceMesh mesh = molmesh::parse_off(text.str(), argv[1]);
+  const molmesh::SurfaceMesh mesh = molmesh::read_surface_mesh(argv[1]);
   const double volume = molmesh::enclosed_volume(mesh.points, mesh.triangles);
 
   molmesh::TetMesh tet;
