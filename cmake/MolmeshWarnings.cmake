@@ -3,9 +3,15 @@ target_compile_options(molmesh_warnings INTERFACE
   $<$<CXX_COMPILER_ID:GNU,Clang>:-Wall -Wextra -Wpedantic -Wshadow -Wconversion -Wno-sign-conversion>)
 
 # Adds one static library per pipeline stage from the sources in its folder, so each
-# stage is usable alone and a newcomer finds it by folder name.
+# stage is usable alone and a newcomer finds it by folder name. `SOURCES a.cpp b.cpp`
+# (names within the folder) takes only those files, for a folder split into libraries.
 function(molmesh_stage_library name folder)
-  file(GLOB _sources CONFIGURE_DEPENDS ${folder}/*.cpp)
+  cmake_parse_arguments(PARSE_ARGV 2 _arg "" "" "SOURCES")
+  if(_arg_SOURCES)
+    list(TRANSFORM _arg_SOURCES PREPEND ${folder}/ OUTPUT_VARIABLE _sources)
+  else()
+    file(GLOB _sources CONFIGURE_DEPENDS ${folder}/*.cpp)
+  endif()
   if(NOT _sources)
     # A stage whose code is all in headers (or not written yet) still gets a real archive.
     set(_empty ${CMAKE_CURRENT_BINARY_DIR}/molmesh_${name}_empty.cpp)
