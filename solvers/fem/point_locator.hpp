@@ -1,8 +1,8 @@
 #pragma once
 // Finds the tetrahedron containing a point, with its barycentric coordinates: point loads
-// (charges) and point evaluation of P1 fields. The cells' bounding boxes go into a
-// Boost.Geometry R-tree (bulk-loaded), so a query tests only the few cells whose boxes
-// contain the point, however strongly the mesh is graded. (A uniform bucket grid, the
+// (charges) and point evaluation of P1 fields. The cells' bounding boxes go into the
+// geometry kernel's box index (a bulk-loaded Boost.Geometry R-tree), so a query tests only
+// the few cells whose boxes contain the point, however strongly the mesh is graded. (A uniform bucket grid, the
 // first version, put thousands of the small cells near a molecule into each bucket of a
 // full mesh that reaches 40 molecule sizes out: 3.5 s for fas2's 906 charges.)
 #include <array>

@@ -9,9 +9,9 @@
 #include <utility>
 
 #include "molmesh/core/error.hpp"
+#include "molmesh/geometry/box_index.hpp"
 #include "molmesh/geometry/closest_point.hpp"
 #include "molmesh/geometry/tetrahedron.hpp"
-#include "molmesh/hierarchy/aabb_tree.hpp"
 
 namespace molmesh {
 namespace {
@@ -101,10 +101,10 @@ std::vector<char> used_columns(const std::vector<Row>& rows, std::size_t columns
   return used;
 }
 
-AabbTree point_tree(const std::vector<Vec3>& points) {
+BoxIndex point_tree(const std::vector<Vec3>& points) {
   std::vector<Box3> boxes(points.size());
   for (std::size_t i = 0; i < points.size(); ++i) boxes[i] = Box3(points[i], points[i]);
-  return AabbTree(boxes);
+  return BoxIndex(boxes);
 }
 
 }  // namespace
@@ -145,12 +145,12 @@ SparseMatrix volume_prolongation(const TetMesh& coarse, const TetMesh& fine, Tra
   tbb::parallel_for(std::size_t{0}, tet_boxes.size(), [&](std::size_t t) {
     tet_boxes[t] = box_of(coarse.tetrahedra[t], coarse.points);
   });
-  const AabbTree tets(tet_boxes);
+  const BoxIndex tets(tet_boxes);
   const auto boundary = tet_mesh_boundary(coarse);
   std::vector<Box3> face_boxes(boundary.size());
   for (std::size_t f = 0; f < boundary.size(); ++f)
     face_boxes[f] = box_of(boundary[f], coarse.points);
-  const AabbTree faces(face_boxes);
+  const BoxIndex faces(face_boxes);
 
   const std::size_t n = fine.points.size();
   std::vector<Row> rows(n);
@@ -161,7 +161,7 @@ SparseMatrix volume_prolongation(const TetMesh& coarse, const TetMesh& fine, Tra
       int best = -1;
       double best_score = -std::numeric_limits<double>::infinity();
       Eigen::Vector4d best_lambda;
-      tets.for_each_containing(p, [&](int t) {
+      tets.containing(p, [&](int t) {
         const auto lambda =
             tet_barycentric(coarse, coarse.tetrahedra[static_cast<std::size_t>(t)], p);
         const double score = lambda.minCoeff();
@@ -195,7 +195,7 @@ SparseMatrix volume_prolongation(const TetMesh& coarse, const TetMesh& fine, Tra
 
   // Repair empty columns (see transfer.hpp). Sequential and in vertex order: deterministic.
   const auto used = used_columns(rows, coarse.points.size());
-  const AabbTree fine_points = point_tree(fine.points);
+  const BoxIndex fine_points = point_tree(fine.points);
   for (std::size_t c = 0; c < used.size(); ++c) {
     if (used[c]) continue;
     const Vec3& xc = coarse.points[c];
@@ -269,7 +269,7 @@ SparseMatrix surface_prolongation(const SurfaceMesh& coarse, const SurfaceMesh& 
   std::vector<Box3> boxes(coarse.triangles.size());
   for (std::size_t t = 0; t < boxes.size(); ++t)
     boxes[t] = box_of(coarse.triangles[t], coarse.points);
-  const AabbTree triangles(boxes);
+  const BoxIndex triangles(boxes);
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 256), [&](const auto& range) {
     for (std::size_t i = range.begin(); i != range.end(); ++i) {
       if (identity[i]) continue;
@@ -284,7 +284,7 @@ SparseMatrix surface_prolongation(const SurfaceMesh& coarse, const SurfaceMesh& 
   });
   TransferStats local;
   const auto used = used_columns(rows, coarse.points.size());
-  const AabbTree fine_points = point_tree(fine.points);
+  const BoxIndex fine_points = point_tree(fine.points);
   for (std::size_t c = 0; c < used.size(); ++c) {
     if (used[c]) continue;
     const Vec3& xc = coarse.points[c];
