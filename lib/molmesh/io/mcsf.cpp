@@ -18,6 +18,8 @@
 
 #include "molmesh/core/atomic_file.hpp"
 #include "molmesh/core/error.hpp"
+#include "molmesh/geometry/predicates.hpp"
+#include "molmesh/geometry/tetrahedron.hpp"
 
 namespace molmesh {
 namespace {
@@ -38,9 +40,6 @@ struct FaceKeyHash {
     return static_cast<std::size_t>(h ^ (h >> 29));
   }
 };
-
-// Corners of the face opposite corner k, ordered to face out of a positive tet.
-constexpr int kFace[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
 
 int type_of_marker(int marker, const McsfFaceTypes& types) {
   switch (marker) {
@@ -165,7 +164,7 @@ void write_mcsf(const std::filesystem::path& path, const TetMesh& mesh,
   std::unordered_map<FaceKey, int, FaceKeyHash> uses;
   uses.reserve(n_tets * 3);
   for (const auto& t : mesh.tetrahedra)
-    for (const auto& f : kFace) ++uses[sorted_key(t[f[0]], t[f[1]], t[f[2]])];
+    for (const auto& f : kTetFaces) ++uses[sorted_key(t[f[0]], t[f[1]], t[f[2]])];
   std::unordered_map<FaceKey, int, FaceKeyHash> face_marker;
   face_marker.reserve(mesh.boundary_faces.size() * 2);
   for (std::size_t i = 0; i < mesh.boundary_faces.size(); ++i) {
@@ -200,13 +199,13 @@ void write_mcsf(const std::filesystem::path& path, const TetMesh& mesh,
         << "%-------- ---- ---- ------------------- ---------------------------------------\n";
     for (std::size_t t = 0; t < n_tets; ++t) {
       Tetrahedron tet = mesh.tetrahedra[t];
-      const Vec3& a = mesh.points[tet[0]];
-      if ((mesh.points[tet[1]] - a).dot((mesh.points[tet[2]] - a).cross(mesh.points[tet[3]] - a)) <
-          0.0)
+      if (orient3d(mesh.points[tet[0]], mesh.points[tet[1]], mesh.points[tet[2]],
+                   mesh.points[tet[3]]) < 0.0)
         std::swap(tet[2], tet[3]);
       out << t << " 0 " << (mesh.cell_markers.empty() ? 0 : mesh.cell_markers[t]);
       for (int k = 0; k < 4; ++k) {
-        const auto key = sorted_key(tet[kFace[k][0]], tet[kFace[k][1]], tet[kFace[k][2]]);
+        const auto key =
+            sorted_key(tet[kTetFaces[k][0]], tet[kTetFaces[k][1]], tet[kTetFaces[k][2]]);
         int type = 0;
         if (uses[key] == 1) {
           const auto it = face_marker.find(key);
@@ -275,9 +274,8 @@ TetMesh read_mcsf(const std::filesystem::path& path, const McsfFaceTypes& types)
       mesh.tetrahedra[t][k] = static_cast<int>(v);
     }
     const auto& tet = mesh.tetrahedra[t];
-    const Vec3& a = mesh.points[tet[0]];
-    const double det =
-        (mesh.points[tet[1]] - a).dot((mesh.points[tet[2]] - a).cross(mesh.points[tet[3]] - a));
+    const double det = orient3d(mesh.points[tet[0]], mesh.points[tet[1]], mesh.points[tet[2]],
+                                mesh.points[tet[3]]);
     if (det == 0.0) lex.fail("simplex " + std::to_string(t) + " is flat (zero volume)");
     if (det < 0.0) {
       std::swap(mesh.tetrahedra[t][2], mesh.tetrahedra[t][3]);
@@ -293,7 +291,7 @@ TetMesh read_mcsf(const std::filesystem::path& path, const McsfFaceTypes& types)
     const auto& tet = mesh.tetrahedra[t];
     for (int k = 0; k < 4; ++k) {
       if (face_types[t][k] == 0) continue;
-      const Triangle f{tet[kFace[k][0]], tet[kFace[k][1]], tet[kFace[k][2]]};
+      const Triangle f{tet[kTetFaces[k][0]], tet[kTetFaces[k][1]], tet[kTetFaces[k][2]]};
       const int m = marker_of_type(face_types[t][k], types);
       mesh.boundary_faces.push_back(f);
       mesh.boundary_face_markers.push_back(m);
