@@ -1,9 +1,12 @@
 #include "molmesh/geometry/box_index.hpp"
 
+#include <algorithm>
 #include <boost/geometry.hpp>
 #include <boost/geometry/index/rtree.hpp>
+#include <cmath>
 #include <limits>
 #include <utility>
+#include <vector>
 
 namespace molmesh {
 
@@ -56,19 +59,35 @@ int BoxIndex::nearest(const Vec3& p, const std::function<double(int)>& distance_
                       double* best_distance_sq) const {
   int best = -1;
   double best_d = std::numeric_limits<double>::infinity();
-  const Point q = point(p);
-  const auto& rtree = tree_->rtree;
-  // Boxes arrive by increasing distance; stop once a box is farther than the best item
-  // (with a little slack, so rounding in the box distance never drops an exact tie).
-  for (auto it = rtree.qbegin(bgi::nearest(q, static_cast<unsigned>(rtree.size())));
-       it != rtree.qend(); ++it) {
-    if (bg::comparable_distance(q, it->first) > best_d * (1.0 + 1e-9)) break;
-    const int item = it->second;
+  const auto consider = [&](int item) {
     const double d = distance_sq(item);
     if (d < best_d || (d == best_d && item < best)) {
       best_d = d;
       best = item;
     }
+  };
+  const Point q = point(p);
+  const auto& rtree = tree_->rtree;
+  // A first bound from the few boxes nearest to p, then every box within that distance
+  // (a little slack, so rounding in box distances never drops an exact tie). The exact
+  // minimum lies among them, since an item is never nearer than its box.
+  constexpr unsigned kFirst = 8;
+  std::vector<int> seen;
+  for (auto it = rtree.qbegin(bgi::nearest(q, kFirst)); it != rtree.qend(); ++it) {
+    consider(it->second);
+    seen.push_back(it->second);
+  }
+  if (best >= 0) {
+    const double r = std::sqrt(best_d) * (1.0 + 1e-9) + 1e-300;
+    const Box probe(Point(p.x() - r, p.y() - r, p.z() - r), Point(p.x() + r, p.y() + r, p.z() + r));
+    for (auto it = rtree.qbegin(bgi::intersects(probe)); it != rtree.qend(); ++it) {
+      if (std::find(seen.begin(), seen.end(), it->second) != seen.end()) continue;
+      if (bg::comparable_distance(q, it->first) > best_d * (1.0 + 1e-9)) continue;
+      consider(it->second);
+    }
+  } else {
+    // The nearest boxes hold only excluded items: fall back to all of them.
+    for (const Entry& e : rtree) consider(e.second);
   }
   if (best < 0) best_d = std::numeric_limits<double>::infinity();
   if (best_distance_sq) *best_distance_sq = best_d;
