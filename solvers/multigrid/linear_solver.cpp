@@ -10,6 +10,8 @@ namespace molmesh::solvers {
 SolveReport solve_reduced(const ReducedSystem& system, std::span<const SparseMatrix> prolongations,
                           const LinearSolverOptions& options, Eigen::VectorXd& x,
                           std::vector<MeshOperator> mesh_operators) {
+  if (options.engine)
+    return options.engine(system, prolongations, options, x, std::move(mesh_operators));
   const bool mesh_coarse_operators = !mesh_operators.empty();
   const auto start = std::chrono::steady_clock::now();
   Preconditioner preconditioner;

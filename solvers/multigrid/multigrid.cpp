@@ -235,6 +235,16 @@ void MultigridPreconditioner::apply(const Eigen::VectorXd& r, Eigen::VectorXd& z
 
 bool MultigridPreconditioner::coarsest_was_shifted() const { return impl_->coarse_shifted; }
 
+const SparseMatrix& MultigridPreconditioner::level_operator(std::size_t l) const {
+  return *impl_->levels.at(l).a;
+}
+
+const SparseMatrix& MultigridPreconditioner::level_prolongation(std::size_t l) const {
+  if (l + 1 >= impl_->levels.size())
+    throw Error("multigrid: the coarsest level has no prolongation");
+  return impl_->levels[l].p;
+}
+
 std::size_t MultigridPreconditioner::mesh_levels() const { return impl_->mesh_levels; }
 
 std::vector<long> MultigridPreconditioner::level_nonzeros() const {

@@ -85,6 +85,11 @@ class MultigridPreconditioner {
   std::size_t mesh_levels() const;
   // True when the coarsest Galerkin operator was singular and got coarse_shift.
   bool coarsest_was_shifted() const;
+  // The hierarchy this V-cycle runs on, for handing the same levels to another multigrid
+  // implementation (PETSc's PCMG, solvers/petsc): level l's operator (l = 0: the fine `a`)
+  // and its prolongation from level l+1 (l < level_sizes().size() - 1).
+  const SparseMatrix& level_operator(std::size_t l) const;
+  const SparseMatrix& level_prolongation(std::size_t l) const;
 
  private:
   struct Impl;

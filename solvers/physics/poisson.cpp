@@ -54,7 +54,7 @@ MeshOperator coarse_operator(const TetMesh& mesh, std::span<const std::pair<int,
 PoissonResult solve_solvation_energy(const TetMesh& mesh, const Atoms& atoms,
                                      std::span<const SparseMatrix> prolongations,
                                      const PoissonOptions& options, const Reporter& reporter,
-                                     std::span<const TetMesh* const> coarse_meshes) {
+                                     std::span<const CoarseLevel> coarse_levels) {
   if (!(options.pdie > 0.0) || !(options.sdie > 0.0)) {
     throw Error("Poisson: permittivities must be positive");
   }
@@ -121,11 +121,12 @@ PoissonResult solve_solvation_energy(const TetMesh& mesh, const Atoms& atoms,
     const auto coarse_start = std::chrono::steady_clock::now();
     std::vector<MeshOperator> mesh_operators;
     if (options.solver.preconditioning == Preconditioning::kMultigrid) {
-      for (const TetMesh* coarse : coarse_meshes)
-        if (coarse == nullptr) throw Error("Poisson: a coarse level has no mesh");
-      mesh_operators.resize(coarse_meshes.size());
-      tbb::parallel_for(std::size_t{0}, coarse_meshes.size(), [&](std::size_t l) {
-        mesh_operators[l] = coarse_operator(*coarse_meshes[l], table, options.dirichlet_markers);
+      for (const CoarseLevel& coarse : coarse_levels)
+        if (coarse.mesh == nullptr) throw Error("Poisson: a coarse level has no mesh");
+      mesh_operators.resize(coarse_levels.size());
+      tbb::parallel_for(std::size_t{0}, coarse_levels.size(), [&](std::size_t l) {
+        mesh_operators[l] =
+            coarse_operator(*coarse_levels[l].mesh, table, options.dirichlet_markers);
       });
     }
     const double coarse_seconds = seconds_since(coarse_start);

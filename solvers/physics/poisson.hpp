@@ -17,6 +17,7 @@
 #include "molmesh/core/reporter.hpp"
 #include "molmesh/tetmesh/markers.hpp"
 #include "solvers/multigrid/linear_solver.hpp"
+#include "solvers/physics/coarse_level.hpp"
 
 namespace molmesh::solvers {
 
@@ -42,14 +43,14 @@ struct PoissonResult {
 
 // mesh: a full mesh (molecule and solvent regions) containing every charged atom.
 // prolongations: Hierarchy::transfers[l].volume for the levels below `mesh` (may be empty).
-// coarse_meshes: one per prolongation to use coarse operators discretised on those meshes
+// coarse_levels: one per prolongation to use coarse operators discretised on those meshes
 // (same regions and outer-sphere markers) instead of Galerkin products (empty: Galerkin).
-// Only operators are needed there: the charges load the finest level alone.
+// Only their meshes are used: the charges load the finest level alone.
 // Throws molmesh::Error when a charge lies outside the mesh or the mesh has no Dirichlet
 // (outer sphere) vertex.
 PoissonResult solve_solvation_energy(const TetMesh& mesh, const Atoms& atoms,
                                      std::span<const SparseMatrix> prolongations,
                                      const PoissonOptions& options, const Reporter& reporter = {},
-                                     std::span<const TetMesh* const> coarse_meshes = {});
+                                     std::span<const CoarseLevel> coarse_levels = {});
 
 }  // namespace molmesh::solvers

@@ -17,6 +17,7 @@
 #include "molmesh/core/reporter.hpp"
 #include "molmesh/tetmesh/markers.hpp"
 #include "solvers/multigrid/linear_solver.hpp"
+#include "solvers/physics/coarse_level.hpp"
 
 namespace molmesh::solvers {
 
@@ -44,13 +45,6 @@ struct SmoluchowskiResult {
   int unknowns = 0;
   int isolated_vertices = 0;  // in closed solvent cavities: left out, c = 0
   SolveReport solve;
-};
-
-// A coarser hierarchy level to discretise on its own (multigrid with re-discretised coarse
-// operators, multigrid.hpp): its mesh and beta*W at its vertices (empty: none).
-struct CoarseLevel {
-  const TetMesh* mesh = nullptr;
-  std::span<const double> beta_w;
 };
 
 // beta_w: beta*W per mesh vertex (dimensionless, kT units), or empty for pure diffusion.

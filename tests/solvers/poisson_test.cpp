@@ -61,8 +61,8 @@ TEST(Poisson, CoarseOperatorsFromTheCoarseMeshesGiveTheSameEnergy) {
   const auto h = born_hierarchy();
   const Atom ion = born_ion();
   const auto galerkin = solve_solvation_energy(h.meshes[0].mesh, {ion}, h.prolongations, {});
-  std::vector<const TetMesh*> coarse;
-  for (std::size_t l = 1; l < h.meshes.size(); ++l) coarse.push_back(&h.meshes[l].mesh);
+  std::vector<CoarseLevel> coarse;
+  for (std::size_t l = 1; l < h.meshes.size(); ++l) coarse.push_back({&h.meshes[l].mesh, {}});
   const auto mesh =
       solve_solvation_energy(h.meshes[0].mesh, {ion}, h.prolongations, {}, {}, coarse);
   std::printf("Born with mesh coarse operators: %d + %d iterations (Galerkin %d + %d)\n",
