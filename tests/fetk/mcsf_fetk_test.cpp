@@ -2,12 +2,11 @@
 // checking counts, orientation, face types and materials as FETK sees them.
 #include <gtest/gtest.h>
 #include <unistd.h>
-#include <mc/gem.h>
 
-#include <Eigen/Geometry>
 #include <filesystem>
 #include <map>
 
+#include "fetk/fetk_reader.hpp"
 #include "molmesh/io/mcsf.hpp"
 #include "molmesh/tetmesh/markers.hpp"
 #include "molmesh/tetmesh/outer_sphere.hpp"
@@ -15,43 +14,6 @@
 
 namespace molmesh {
 namespace {
-
-struct FetkMesh {
-  int vertices = 0;
-  int simplices = 0;
-  std::map<int, int> boundary_face_types;  // type -> count of (simplex, face) pairs
-  std::map<int, int> materials;            // SS_type -> count
-  int negative = 0;
-  bool read_ok = false;
-};
-
-FetkMesh read_with_fetk(const std::filesystem::path& path) {
-  FetkMesh r;
-  Vio_start();
-  Gem* gem = Gem_ctor(VNULL, VNULL);
-  Vio* sock = Vio_ctor("FILE", "ASC", VNULL, path.c_str(), "r");
-  if (sock && Vio_accept(sock, 0) >= 0) {
-    r.read_ok = Gem_read(gem, 0, sock) == 1;
-    Vio_acceptFree(sock);
-  }
-  if (sock) Vio_dtor(&sock);
-  r.vertices = Gem_numVV(gem);
-  r.simplices = Gem_numSS(gem);
-  for (int s = 0; s < r.simplices; ++s) {
-    SS* simplex = Gem_SS(gem, s);
-    ++r.materials[static_cast<int>(SS_type(simplex))];
-    for (int f = 0; f < 4; ++f) {
-      const int type = static_cast<int>(SS_faceType(simplex, f));
-      if (type != 0) ++r.boundary_face_types[type];
-    }
-    Vec3 p[4];
-    for (int v = 0; v < 4; ++v)
-      for (int d = 0; d < 3; ++d) p[v][d] = VV_coord(SS_vertex(simplex, v), d);
-    if ((p[1] - p[0]).dot((p[2] - p[0]).cross(p[3] - p[0])) <= 0.0) ++r.negative;
-  }
-  Gem_dtor(&gem);
-  return r;
-}
 
 Atoms one_atom() {
   Atom a;
@@ -66,7 +28,8 @@ TEST(FetkReader, ReadsMolmeshFullMesh) {
   o.outer_radius = 20.0;
   o.active_site = {Sphere{Vec3(0, 0, 3), 1.6}};  // marks faces but they are interior here
   const TetMesh mesh = tetrahedralize(ion, one_atom(), o);
-  const auto path = std::filesystem::temp_directory_path() / ("molmesh_fetk_full_" + std::to_string(::getpid()) + ".m");
+  const auto path = std::filesystem::temp_directory_path() /
+                    ("molmesh_fetk_full_" + std::to_string(::getpid()) + ".m");
   write_mcsf(path, mesh);
   FetkMesh fetk = read_with_fetk(path);
   EXPECT_TRUE(fetk.read_ok);
@@ -94,7 +57,8 @@ TEST(FetkReader, ReadsMolmeshExteriorMeshWithActiveSite) {
   const TetMesh mesh = tetrahedralize(ion, one_atom(), o);
   std::map<int, int> per_marker;
   for (int m : mesh.boundary_face_markers) ++per_marker[m];
-  const auto path = std::filesystem::temp_directory_path() / ("molmesh_fetk_exterior_" + std::to_string(::getpid()) + ".m");
+  const auto path = std::filesystem::temp_directory_path() /
+                    ("molmesh_fetk_exterior_" + std::to_string(::getpid()) + ".m");
   write_mcsf(path, mesh);
   FetkMesh fetk = read_with_fetk(path);
   EXPECT_TRUE(fetk.read_ok);

@@ -1,0 +1,79 @@
+// `molmesh export` on a real hierarchy, read back by independent readers (meshio, scipy,
+// a numpy parser of PETSc's binary format; check_export.py) and compared with the HDF5.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "io/io_test_support.hpp"
+
+namespace molmesh {
+namespace {
+
+namespace fs = std::filesystem;
+
+int run_cli(const std::string& args, const fs::path& log) {
+  const std::string command =
+      std::string(MOLMESH_CLI_PATH) + " -q " + args + " > " + log.string() + " 2>&1";
+  return std::system(command.c_str());
+}
+
+class ExportCli : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    // Per process: ctest runs each test of the suite in its own process, in parallel.
+    dir_ = fs::temp_directory_path() / ("molmesh_export_cli_" + std::to_string(::getpid()));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+    h5_ = dir_ / "fas2.h5";
+    status_ = run_cli("hierarchy " + (fs::path(MOLMESH_TEST_DATA_DIR) / "fas2.pqr").string() +
+                          " --t0 0.1,0.3 --domain exterior --outer-radius 60 -o " + h5_.string(),
+                      dir_ / "hierarchy.log");
+  }
+  static inline fs::path dir_, h5_;
+  static inline int status_ = -1;
+};
+
+TEST_F(ExportCli, IndependentReadersReadEveryLevel) {
+  ASSERT_EQ(status_, 0) << test::slurp(dir_ / "hierarchy.log");
+  ASSERT_EQ(run_cli("export " + h5_.string() + " --all-levels -o " + (dir_ / "fas2").string(),
+                    dir_ / "export.log"),
+            0)
+      << test::slurp(dir_ / "export.log");
+  // One line per file written: 5 per level and 4 per transfer.
+  const std::string listing = test::slurp(dir_ / "export.log");
+  EXPECT_EQ(std::count(listing.begin(), listing.end(), '\n'), 2 * 5 + 4) << listing;
+  const fs::path checker = fs::path(MOLMESH_TEST_DATA_DIR).parent_path() / "io" / "check_export.py";
+  const std::string command = "/usr/bin/python3 " + checker.string() + " " + h5_.string() + " " +
+                              (dir_ / "fas2").string() + " > " + (dir_ / "check.log").string() +
+                              " 2>&1";
+  EXPECT_EQ(std::system(command.c_str()), 0) << test::slurp(dir_ / "check.log");
+}
+
+TEST_F(ExportCli, OneLevelAndItsProlongation) {
+  ASSERT_EQ(status_, 0);
+  ASSERT_EQ(run_cli("export " + h5_.string() + " --level 1 -o " + (dir_ / "one").string(),
+                    dir_ / "one.log"),
+            0);
+  EXPECT_TRUE(fs::exists(dir_ / "one_L1_volume.m"));
+  EXPECT_FALSE(fs::exists(dir_ / "one_L0_volume.m"));
+  // Level 1 is the coarsest of two: no prolongation has it as the fine level.
+  EXPECT_FALSE(fs::exists(dir_ / "one_P1_to_0_volume.petsc"));
+}
+
+TEST_F(ExportCli, ALevelTheFileDoesNotHaveIsAnError) {
+  ASSERT_EQ(status_, 0);
+  const int status = run_cli("export " + h5_.string() + " --level 7 -o " + (dir_ / "bad").string(),
+                             dir_ / "bad.log");
+  EXPECT_NE(status, 0);
+  EXPECT_NE(test::slurp(dir_ / "bad.log").find("has 2 level(s)"), std::string::npos)
+      << test::slurp(dir_ / "bad.log");
+  EXPECT_FALSE(fs::exists(dir_ / "bad_L0_volume.m"));
+}
+
+}  // namespace
+}  // namespace molmesh
