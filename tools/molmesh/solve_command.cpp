@@ -131,6 +131,18 @@ nlohmann::json report_json(const solvers::SolveReport& r) {
           {"mesh_levels_used", r.mesh_levels}};
 }
 
+// What every result names: the problem, the engine, the level and its size.
+void add_problem_json(nlohmann::json& j, const char* problem, const CommonArgs& a,
+                      const SolveEngine& engine, const TetMesh& mesh, int unknowns) {
+  j["problem"] = problem;
+  j["engine"] = engine.name;
+  j["hierarchy"] = a.hierarchy;
+  j["level"] = a.level;
+  j["vertices"] = mesh.points.size();
+  j["tetrahedra"] = mesh.tetrahedra.size();
+  j["unknowns"] = unknowns;
+}
+
 void write_json(const std::string& path, const nlohmann::json& j) {
   if (path.empty()) return;
   write_file_atomically(path, [&](std::ostream& out) { out << j.dump(2) << '\n'; });
@@ -169,13 +181,7 @@ void run_smoluchowski(const SmoluchowskiArgs& args, const CliContext& ctx,
                                                   static_cast<Eigen::Index>(solved.beta_w.size())));
   }
   nlohmann::json j = report_json(result.solve);
-  j["problem"] = "steady-state Smoluchowski";
-  j["engine"] = engine.name;
-  j["hierarchy"] = args.common.hierarchy;
-  j["level"] = args.common.level;
-  j["vertices"] = mesh.points.size();
-  j["tetrahedra"] = mesh.tetrahedra.size();
-  j["unknowns"] = result.unknowns;
+  add_problem_json(j, "steady-state Smoluchowski", args.common, engine, mesh, result.unknowns);
   j["absorbing"] = args.absorbing;
   j["coarse_operators"] = args.common.coarse_operators;
   j["absorbing_vertices"] = result.absorbing_vertices;
@@ -213,13 +219,8 @@ void run_poisson(const PoissonArgs& args, const CliContext& ctx, const SolveEngi
   store_field(args.common, "potential_kJ_per_mol_e", result.potential);
   store_field(args.common, "reaction_potential_kJ_per_mol_e", result.reaction_potential);
   nlohmann::json j = report_json(result.solvated);
-  j["problem"] = "Poisson solvation energy (reference-solve method)";
-  j["engine"] = engine.name;
-  j["hierarchy"] = args.common.hierarchy;
-  j["level"] = args.common.level;
-  j["vertices"] = mesh.points.size();
-  j["tetrahedra"] = mesh.tetrahedra.size();
-  j["unknowns"] = result.unknowns;
+  add_problem_json(j, "Poisson solvation energy (reference-solve method)", args.common, engine,
+                   mesh, result.unknowns);
   j["pqr"] = args.pqr;
   j["pdie"] = args.pdie;
   j["sdie"] = args.sdie;
