@@ -19,6 +19,7 @@
 #include "molmesh/io/sha256.hpp"
 #include "molmesh/io/sphere_list.hpp"
 #include "molmesh/pipeline/surface_pipeline.hpp"
+#include "surface_options.hpp"
 
 namespace molmesh::cli {
 namespace {
@@ -26,17 +27,10 @@ namespace {
 struct HierarchyArgs {
   std::string input;
   std::string output;
-  std::vector<double> t0 = {0.1, 0.3, 0.5, 0.7};
   std::string domain = "full";
-  // surface
-  double spacing = 0.5;
-  double blobbyness = -0.5;
-  double isovalue = 1.0;
-  double min_cavity_volume = 0.0;
-  // processing
-  double alpha = 1.0;
-  double beta = 1.0;
-  int rings = 2;
+  // Atoms, surface and processing: the shared layer (surface_options.hpp). Its coarsening
+  // thresholds are the levels' T0 here (HierarchyOptions::t0 by default).
+  SurfaceCliOptions surface;
   // volume
   double sphere_ratio = 40.0;
   double outer_radius = 0.0;
@@ -66,21 +60,21 @@ std::string join(const std::vector<double>& values) {
 void run(const HierarchyArgs& args, const CliContext& ctx) {
   const auto start = std::chrono::steady_clock::now();
   const Reporter reporter = ctx.reporter();
-  const Atoms atoms = read_atoms(args.input, {}, reporter);
+  const Atoms atoms = read_atoms(args.input, args.surface.atoms, reporter);
+  const SurfacePipelineOptions& pipeline = args.surface.pipeline;
 
-  SurfacePipelineOptions surface_options;
-  surface_options.blur.spacing = args.spacing;
-  surface_options.blur.blobbyness = args.blobbyness;
-  surface_options.isovalue = args.isovalue;
-  surface_options.min_cavity_volume = args.min_cavity_volume;
+  SurfacePipelineOptions surface_options = pipeline;
   surface_options.raw = true;  // each level does its own processing with its own T0
   const auto surface = surface_from_atoms(atoms, surface_options, reporter);
 
   HierarchyOptions options;
-  options.t0 = args.t0;
-  options.processing.alpha = args.alpha;
-  options.processing.beta = args.beta;
-  options.processing.rings = args.rings;
+  options.t0 = pipeline.processing.t0;
+  options.processing = pipeline.processing;  // its t0 is replaced by one T0 per level
+  if (pipeline.keep_on_surface) options.processing.project = surface.projection;
+  if (!pipeline.keep_spheres_file.empty()) {
+    for (const Sphere& s : read_spheres(pipeline.keep_spheres_file))
+      options.processing.keep_spheres.push_back(s);
+  }
   const std::map<std::string, Domain> domains{
       {"interior", Domain::interior}, {"exterior", Domain::exterior}, {"full", Domain::full}};
   options.tetmesh.domain = domains.at(args.domain);
@@ -90,7 +84,9 @@ void run(const HierarchyArgs& args, const CliContext& ctx) {
   if (!args.active_site.empty()) {
     options.tetmesh.active_site = read_spheres(args.active_site);
     // The active site stays dense on every level (paper Fig. 5).
-    options.processing.keep_spheres = options.tetmesh.active_site;
+    options.processing.keep_spheres.insert(options.processing.keep_spheres.end(),
+                                           options.tetmesh.active_site.begin(),
+                                           options.tetmesh.active_site.end());
   }
   options.tetmesh.max_radius_edge_ratio = args.max_radius_edge;
   options.tetmesh.min_dihedral_deg = args.min_dihedral;
@@ -104,15 +100,23 @@ void run(const HierarchyArgs& args, const CliContext& ctx) {
   hierarchy.input_name = std::filesystem::path(args.input).filename().string();
   hierarchy.input_checksum = sha256_file(args.input);
   auto& p = hierarchy.parameters;
-  p["t0"] = join(args.t0);
+  p["t0"] = join(options.t0);
   p["domain"] = args.domain;
-  p["spacing"] = text(args.spacing);
-  p["blobbyness"] = text(args.blobbyness);
-  p["isovalue"] = text(args.isovalue);
-  p["min_cavity_volume"] = text(args.min_cavity_volume);
-  p["alpha"] = text(args.alpha);
-  p["beta"] = text(args.beta);
-  p["rings"] = std::to_string(args.rings);
+  p["surface"] = surface_kind_name(pipeline.surface);
+  p["probe_radius"] = text(pipeline.probe_radius);
+  p["spacing"] = text(pipeline.blur.spacing);
+  p["blobbyness"] = text(pipeline.blur.blobbyness);
+  p["isovalue"] = text(pipeline.isovalue);
+  p["level"] = text(surface.level);
+  p["blur"] = pipeline.blur_method == BlurMethod::kFast ? "fast" : "exact";
+  p["min_cavity_volume"] = text(pipeline.min_cavity_volume);
+  p["alpha"] = text(pipeline.processing.alpha);
+  p["beta"] = text(pipeline.processing.beta);
+  p["rings"] = std::to_string(pipeline.processing.rings);
+  p["keep_spheres"] = pipeline.keep_spheres_file;
+  p["radii"] = args.surface.atoms.radii_file ? args.surface.atoms.radii_file->string() : "";
+  p["hetatm"] = args.surface.atoms.include_hetatm ? "yes" : "no";
+  p["waters"] = args.surface.atoms.include_waters ? "yes" : "no";
   p["sphere_ratio"] = text(args.sphere_ratio);
   p["outer_radius"] = text(report.outer_radius);
   p["outer_sphere_subdivisions"] = std::to_string(args.outer_subdivisions);
@@ -160,34 +164,25 @@ const CommandRegistration registration{
              "are written beside it")
           ->required();
       cmd->add_option(
-             "--t0", args->t0,
-             "Coarsening thresholds T0 (Eq. 6), one level each, finest first, non-decreasing")
-          ->delimiter(',')
-          ->capture_default_str();
-      cmd->add_option(
              "--domain", args->domain,
              "Volume meshed on every level: interior (molecule), exterior (solvent up to the "
              "outer sphere) or full (both, conforming)")
           ->check(CLI::IsMember({"interior", "exterior", "full"}))
           ->capture_default_str();
-      cmd->add_option("--spacing", args->spacing, "Grid spacing of the Gaussian blurring (Å)")
-          ->check(CLI::PositiveNumber)
-          ->capture_default_str();
-      cmd->add_option("--blobbyness", args->blobbyness, "Global blobbyness B of Eq. 1 (negative)")
-          ->capture_default_str();
-      cmd->add_option("--isovalue", args->isovalue, "Isovalue of the blurred volume")
-          ->check(CLI::PositiveNumber)
-          ->capture_default_str();
-      cmd->add_option("--min-cavity-volume", args->min_cavity_volume,
-                      "Drop interior cavities enclosing less than this volume (Å³; 0 keeps all)")
-          ->capture_default_str();
-      cmd->add_option("--alpha", args->alpha, "Eq. 6 exponent on the longest incident edge")
-          ->capture_default_str();
-      cmd->add_option("--beta", args->beta, "Eq. 6 exponent on the eigenvalue ratio")
-          ->capture_default_str();
-      cmd->add_option("--rings", args->rings, "k-ring of the local structure tensor")
-          ->check(CLI::Range(1, 4))
-          ->capture_default_str();
+      args->surface.pipeline.processing.t0 = HierarchyOptions{}.t0;
+      add_surface_options(*cmd, args->surface);
+      // Every level is processed by the hierarchy itself, so there is no raw surface to
+      // stop at, and the coarsening thresholds are the levels (--t0, as documented;
+      // --coarsen is the shared layer's name for the same values).
+      cmd->remove_option(cmd->get_option("--raw"));
+      cmd->remove_option(cmd->get_option("--coarsen"));
+      cmd->add_option(
+             "--t0,--coarsen", args->surface.pipeline.processing.t0,
+             "Coarsening thresholds T0 (Eq. 6), one level each, finest first, non-decreasing")
+          ->delimiter(',')
+          ->check(CLI::NonNegativeNumber)
+          ->capture_default_str()
+          ->type_name("T0[,T0...]");
       cmd->add_option("--sphere-ratio", args->sphere_ratio,
                       "Outer sphere radius as a multiple of the molecule size (exterior/full)")
           ->check(CLI::PositiveNumber)

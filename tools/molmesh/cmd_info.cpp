@@ -1,36 +1,31 @@
 // `molmesh info FILE.h5`: what a hierarchy file holds, for humans (sizes, T0, quality,
 // the parameters that produced it, transfer operators, stored fields).
 #include <CLI/CLI.hpp>
-#include <algorithm>
-#include <cmath>
 #include <cstdio>
-#include <numbers>
+#include <map>
 #include <string>
 
 #include "command_registry.hpp"
 #include "molmesh/io/hierarchy_hdf5.hpp"
+#include "molmesh/surface/surface_stats.hpp"
 #include "molmesh/tetmesh/tet_stats.hpp"
 
 namespace molmesh::cli {
 namespace {
 
-// Smallest and largest triangle angle (degrees).
-std::pair<double, double> angle_range(const SurfaceMesh& mesh) {
-  double lo = 180.0, hi = 0.0;
-  for (const auto& t : mesh.triangles) {
-    for (int k = 0; k < 3; ++k) {
-      const Vec3& a = mesh.points[static_cast<std::size_t>(t[static_cast<std::size_t>(k)])];
-      const Vec3& b =
-          mesh.points[static_cast<std::size_t>(t[static_cast<std::size_t>((k + 1) % 3)])];
-      const Vec3& c =
-          mesh.points[static_cast<std::size_t>(t[static_cast<std::size_t>((k + 2) % 3)])];
-      const double angle =
-          std::atan2((b - a).cross(c - a).norm(), (b - a).dot(c - a)) * 180.0 / std::numbers::pi;
-      lo = std::min(lo, angle);
-      hi = std::max(hi, angle);
-    }
-  }
-  return {lo, hi};
+// "ses (probe 1.4 A)" / "gaussian (B -0.5, isovalue 1)" from the stored parameters; files
+// written before surfaces had kinds were all Gaussian.
+std::string surface_description(const std::map<std::string, std::string>& p) {
+  auto get = [&](const char* key, const char* fallback) {
+    const auto it = p.find(key);
+    return it == p.end() ? std::string(fallback) : it->second;
+  };
+  const std::string kind = get("surface", "gaussian");
+  if (kind == "gaussian")
+    return kind + " (blobbyness " + get("blobbyness", "?") + ", isovalue " + get("isovalue", "?") +
+           ")";
+  if (kind == "vdw") return kind;
+  return kind + " (probe radius " + get("probe_radius", "?") + " A)";
 }
 
 void run(const std::string& path) {
@@ -38,22 +33,25 @@ void run(const std::string& path) {
   std::printf("%s: %s version %d, %zu levels (level 0 finest), lengths in angstrom\n", path.c_str(),
               kHierarchyFormatName, kHierarchyFormatVersion, h.levels.size());
   std::printf("input: %s (sha256 %s)\n", h.input_name.c_str(), h.input_checksum.c_str());
+  std::printf("surface: %s\n", surface_description(h.parameters).c_str());
   std::printf(
-      "\nlevel     T0  surf verts  surf tris  min/max angle  vol verts       tets"
-      "  min/max dihedral  regions (marker:tets)\n");
+      "\nlevel     T0  surf verts  surf tris  min/max angle   area A^2  volume A^3  vol verts"
+      "       tets  min/max dihedral  regions (marker:tets)\n");
   for (std::size_t l = 0; l < h.levels.size(); ++l) {
     const auto& level = h.levels[l];
-    const auto [amin, amax] = angle_range(level.surface);
+    const SurfaceStats surface = compute_surface_stats(level.surface);
     const auto stats = compute_tet_stats(level.volume);
     std::string regions;
     for (const auto& [marker, count] : stats.tets_per_region) {
       regions +=
           (regions.empty() ? "" : " ") + std::to_string(marker) + ":" + std::to_string(count);
     }
-    std::printf("%5zu  %5.3f  %10zu  %9zu  %5.1f / %5.1f  %9zu  %9zu   %6.2f / %6.2f  %s\n", l,
-                level.t0, level.surface.points.size(), level.surface.triangles.size(), amin, amax,
-                level.volume.points.size(), level.volume.tetrahedra.size(), stats.min_dihedral_deg,
-                stats.max_dihedral_deg, regions.c_str());
+    std::printf(
+        "%5zu  %5.3f  %10zu  %9zu  %5.1f / %5.1f  %9.1f  %10.1f  %9zu  %9zu   %6.2f / %6.2f  %s\n",
+        l, level.t0, level.surface.points.size(), level.surface.triangles.size(),
+        surface.min_angle_deg, surface.max_angle_deg, surface.area, surface.volume,
+        level.volume.points.size(), level.volume.tetrahedra.size(), stats.min_dihedral_deg,
+        stats.max_dihedral_deg, regions.c_str());
   }
   if (!h.transfers.empty()) {
     std::printf("\ntransfer   volume P (rows x cols, nnz)     surface P (rows x cols, nnz)\n");

@@ -19,22 +19,43 @@ void add_atom_options(CLI::App& cmd, AtomReadOptions& options) {
 }
 
 void add_surface_pipeline_options(CLI::App& cmd, SurfacePipelineOptions& options) {
+  cmd.add_option("--surface", options.surface,
+                 "Which surface of the atoms: 'ses' solvent-excluded (what a probe rolling "
+                 "over the atoms cannot reach; the dielectric boundary of PB solvers), 'sas' "
+                 "solvent-accessible (atoms grown by the probe), 'vdw' (union of the atoms), "
+                 "'gaussian' the paper's blurred density (--blobbyness, --isovalue). "
+                 "docs/surface.md")
+      ->transform(CLI::CheckedTransformer(
+          std::map<std::string, SurfaceKind>{{"gaussian", SurfaceKind::kGaussian},
+                                             {"vdw", SurfaceKind::kVdw},
+                                             {"sas", SurfaceKind::kSas},
+                                             {"ses", SurfaceKind::kSes}},
+          CLI::ignore_case))
+      ->default_str(surface_kind_name(options.surface))
+      ->type_name("ses|sas|vdw|gaussian");
+  cmd.add_option("--probe-radius", options.probe_radius,
+                 "Solvent probe radius in Å of the ses and sas surfaces (1.4: water)")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str()
+      ->type_name("R");
   cmd.add_option("--spacing", options.blur.spacing,
                  "Grid spacing of the blurred volume in Å (smaller: finer surface, more "
                  "vertices, more memory)")
       ->check(CLI::PositiveNumber)
       ->capture_default_str()
       ->type_name("H");
-  cmd.add_option("--blobbyness", options.blur.blobbyness,
-                 "Blobbyness B < 0 of the Gaussian kernel exp(B(|x-c|^2/r^2 - 1)) for atoms "
-                 "without their own; closer to 0 blurs more, more negative follows the atoms "
-                 "closely")
+  cmd.add_option(
+         "--blobbyness", options.blur.blobbyness,
+         "(gaussian) Blobbyness B < 0 of the Gaussian kernel exp(B(|x-c|^2/r^2 - 1)) for atoms "
+         "without their own; closer to 0 blurs more, more negative follows the atoms "
+         "closely")
       ->check(CLI::Range(-1e6, -1e-12))
       ->capture_default_str()
       ->type_name("B");
-  cmd.add_option("--isovalue", options.isovalue,
-                 "Level of the blurred volume that is the surface (the volume is 1 on a lone "
-                 "atom's sphere)")
+  cmd.add_option(
+         "--isovalue", options.isovalue,
+         "(gaussian) Level of the blurred volume that is the surface (the volume is 1 on a lone "
+         "atom's sphere)")
       ->check(CLI::PositiveNumber)
       ->capture_default_str()
       ->type_name("T");
@@ -95,6 +116,8 @@ void add_surface_options(CLI::App& cmd, SurfaceCliOptions& options) {
 
 nlohmann::json surface_parameters_json(const SurfaceCliOptions& options) {
   nlohmann::json j;
+  j["surface"] = surface_kind_name(options.pipeline.surface);
+  j["probe_radius"] = options.pipeline.probe_radius;
   j["spacing"] = options.pipeline.blur.spacing;
   j["blobbyness"] = options.pipeline.blur.blobbyness;
   j["isovalue"] = options.pipeline.isovalue;

@@ -17,7 +17,7 @@ struct SurfaceCliOptions {
 
 // --radii, --hetatm/--no-hetatm, --waters
 void add_atom_options(CLI::App& cmd, AtomReadOptions& options);
-// --spacing, --blobbyness, --isovalue, --min-cavity-volume, --raw (and processing options)
+// --surface, --probe-radius, --spacing, --blobbyness, --isovalue, --min-cavity-volume, --raw (and processing options)
 void add_surface_pipeline_options(CLI::App& cmd, SurfacePipelineOptions& options);
 // Both of the above.
 void add_surface_options(CLI::App& cmd, SurfaceCliOptions& options);

@@ -1,6 +1,7 @@
 #include "molmesh/pipeline/surface_pipeline.hpp"
 
 #include <chrono>
+#include <memory>
 #include <string>
 #include <utility>
 
@@ -9,6 +10,9 @@
 #include "molmesh/io/sphere_list.hpp"
 #include "molmesh/surface/components.hpp"
 #include "molmesh/surface/marching_cubes.hpp"
+#include "molmesh/volume/ball_union.hpp"
+#include "molmesh/volume/level_set_projection.hpp"
+#include "molmesh/volume/ses_field.hpp"
 
 namespace molmesh {
 namespace {
@@ -16,13 +20,15 @@ namespace {
 using Clock = std::chrono::steady_clock;
 
 // Marching cubes, cavity removal, then processing (unless raw).
-void extract_and_process(const Grid& grid, const SurfacePipelineOptions& options,
+void extract_and_process(const Grid& grid, double level, const SurfacePipelineOptions& options,
+                         const std::function<Vec3(const Vec3&)>& projection,
                          const Reporter& reporter, SurfacePipelineResult& result) {
   auto start = Clock::now();
-  SurfaceMesh raw = marching_cubes(grid, options.isovalue, reporter);
+  result.level = level;
+  SurfaceMesh raw = marching_cubes(grid, level, reporter);
   const double mc_seconds = seconds_since(start);
   if (raw.triangles.empty())
-    throw Error("the isosurface at isovalue " + std::to_string(options.isovalue) +
+    throw Error("the isosurface at isovalue " + std::to_string(level) +
                 " is empty; lower the isovalue or check the input");
   result.stages.push_back({"marching cubes", mc_seconds, compute_surface_stats(raw)});
 
@@ -43,6 +49,7 @@ void extract_and_process(const Grid& grid, const SurfacePipelineOptions& options
     return;
   }
   ProcessingOptions processing = options.processing;
+  if (options.keep_on_surface && projection && !processing.project) processing.project = projection;
   if (!options.keep_spheres_file.empty()) {
     for (const Sphere& s : read_spheres(options.keep_spheres_file))
       processing.keep_spheres.push_back(s);
@@ -58,26 +65,49 @@ void extract_and_process(const Grid& grid, const SurfacePipelineOptions& options
 
 }  // namespace
 
+double level_of(const SurfacePipelineOptions& options) {
+  return options.surface == SurfaceKind::kGaussian ? options.isovalue : 0.0;
+}
+
+Grid surface_volume(const Atoms& atoms, const SurfacePipelineOptions& options,
+                    const Reporter& reporter) {
+  switch (options.surface) {
+    case SurfaceKind::kVdw:
+      return ball_union_field(atoms, 0.0, options.blur.spacing, reporter);
+    case SurfaceKind::kSas:
+      return ball_union_field(atoms, options.probe_radius, options.blur.spacing, reporter);
+    case SurfaceKind::kSes:
+      return ses_field(atoms, options.probe_radius, options.blur.spacing, reporter);
+    case SurfaceKind::kGaussian:
+      break;
+  }
+  BlurOptions blur = options.blur;
+  blur.isovalue = options.isovalue;
+  return options.blur_method == BlurMethod::kFast
+             ? fast_blur(atoms, blur, SplatMethod::kTrilinear, reporter)
+             : blur_atoms(atoms, blur, reporter);
+}
+
 SurfacePipelineResult surface_from_atoms(const Atoms& atoms, const SurfacePipelineOptions& options,
                                          const Reporter& reporter) {
   SurfacePipelineResult result;
-  BlurOptions blur = options.blur;
-  blur.isovalue = options.isovalue;
   const auto start = Clock::now();
-  Grid grid = options.blur_method == BlurMethod::kFast
-                  ? fast_blur(atoms, blur, SplatMethod::kTrilinear, reporter)
-                  : blur_atoms(atoms, blur, reporter);
-  result.stages.push_back({"blur", seconds_since(start), std::nullopt});
-  result.grid_dims = grid.dims;
-  extract_and_process(grid, options, reporter, result);
-  if (options.keep_volume) result.volume = std::move(grid);
+  auto grid = std::make_shared<Grid>(surface_volume(atoms, options, reporter));
+  result.stages.push_back({options.surface == SurfaceKind::kGaussian ? "blur" : "distance field",
+                           seconds_since(start), std::nullopt});
+  result.grid_dims = grid->dims;
+  // Distance-field surfaces are exact level sets: processing keeps its vertices on them.
+  if (options.surface != SurfaceKind::kGaussian)
+    result.projection = level_set_projection(grid, level_of(options));
+  extract_and_process(*grid, level_of(options), options, result.projection, reporter, result);
+  if (options.keep_volume) result.volume = *grid;
   return result;
 }
 
 SurfacePipelineResult surface_from_grid(const Grid& grid, const SurfacePipelineOptions& options,
                                         const Reporter& reporter) {
   SurfacePipelineResult result;
-  extract_and_process(grid, options, reporter, result);
+  extract_and_process(grid, options.isovalue, options, {}, reporter, result);
   return result;
 }
 

@@ -1,8 +1,10 @@
 #pragma once
-// Stage 2.1 as the CLI runs it: atoms (or a volume) -> Gaussian blur -> marching cubes ->
+// Stage 2.1 as the CLI runs it: atoms (or a volume) -> Gaussian blur or distance field
+// (docs/surface.md) -> marching cubes ->
 // optional removal of small cavities -> surface processing (unless raw). Each stage is timed
 // and, for surfaces, measured.
 #include <array>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -16,10 +18,21 @@
 #include "molmesh/volume/fast_blur.hpp"
 #include "molmesh/volume/gaussian_blur.hpp"
 #include "molmesh/volume/grid.hpp"
+#include "molmesh/volume/surface_kind.hpp"
 
 namespace molmesh {
 
 struct SurfacePipelineOptions {
+  // Which surface of the atoms: the paper's Gaussian (blur, isovalue below) or the vdW,
+  // solvent-accessible or solvent-excluded surface (distance fields sampled every
+  // blur.spacing and contoured at 0; blobbyness and isovalue do not apply). docs/surface.md.
+  SurfaceKind surface = SurfaceKind::kGaussian;
+  double probe_radius = 1.4;  // Å, solvent probe of the sas and ses surfaces (water)
+  // Distance-field surfaces only: project vertices back onto the level set after every
+  // processing move (ProcessingOptions::project). Off by default: on 1a1p and fas2 it keeps
+  // 0.1-0.2 % more volume but costs angle quality at the surfaces' creases and cusps
+  // (docs/surface.md).
+  bool keep_on_surface = false;
   BlurOptions blur;  // blur.isovalue is overwritten with `isovalue` below
   // Eq. 1 summed exactly, or Eq. 2 by splatting + recursive filtering (volume/fast_blur.hpp,
   // measurements in docs/inputs.md).
@@ -47,8 +60,19 @@ struct SurfacePipelineResult {
   // Distance of the final surface's vertices to the raw one (zero when raw).
   Dislocation dislocation;
   std::array<int, 3> grid_dims{0, 0, 0};  // the blurred volume's size (0 for volume input)
-  Grid volume;  // the blurred volume, only with options.keep_volume (atoms input)
+  Grid volume;         // the blurred volume, only with options.keep_volume (atoms input)
+  double level = 1.0;  // the level marching cubes contoured (isovalue, or 0 for distances)
+  // For the distance-field surfaces: moves a point onto the surface (processing uses it
+  // when options.keep_on_surface; `hierarchy` passes it on to every level's processing).
+  // Empty for the Gaussian.
+  std::function<Vec3(const Vec3&)> projection;
 };
+
+// The volume whose level `level_of(options)` is the chosen surface: Eq. 1 (or Eq. 2) for
+// kGaussian, a distance field (volume/ball_union.hpp, volume/ses_field.hpp) otherwise.
+Grid surface_volume(const Atoms& atoms, const SurfacePipelineOptions& options,
+                    const Reporter& reporter = {});
+double level_of(const SurfacePipelineOptions& options);
 
 SurfacePipelineResult surface_from_atoms(const Atoms& atoms, const SurfacePipelineOptions& options,
                                          const Reporter& reporter = {});

@@ -1,5 +1,8 @@
 #include "molmesh/processing/process_surface.hpp"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -41,6 +44,15 @@ class StageTimer {
   bool record_;
 };
 
+void project_vertices(SurfaceMesh& mesh, const std::function<Vec3(const Vec3&)>& project) {
+  if (!project) return;
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, mesh.points.size(), 1024),
+                    [&](const auto& r) {
+                      for (std::size_t v = r.begin(); v != r.end(); ++v)
+                        mesh.points[v] = project(mesh.points[v]);
+                    });
+}
+
 }  // namespace
 
 ProcessingResult process_surface(const SurfaceMesh& input, const ProcessingOptions& options,
@@ -62,7 +74,10 @@ ProcessingResult process_surface(const SurfaceMesh& input, const ProcessingOptio
   auto improve_and_flip = [&](const std::string& suffix, int sweeps) {
     ImproveOptions pass = improve;
     pass.sweeps = sweeps;
-    timer.run("improve" + suffix, [&] { improve_angles(result.mesh, pass, reporter); });
+    timer.run("improve" + suffix, [&] {
+      improve_angles(result.mesh, pass, reporter);
+      project_vertices(result.mesh, options.project);
+    });
     if (options.flips) {
       timer.run("flip" + suffix, [&] {
         if (!options.valence_flips) {
@@ -97,7 +112,10 @@ ProcessingResult process_surface(const SurfaceMesh& input, const ProcessingOptio
       result.mesh = std::move(coarse.mesh);
       result.provenance = std::move(coarse.provenance);
     });
-    timer.run("smooth" + tag, [&] { smooth_normals(result.mesh, options.smoothing, reporter); });
+    timer.run("smooth" + tag, [&] {
+      smooth_normals(result.mesh, options.smoothing, reporter);
+      project_vertices(result.mesh, options.project);
+    });
     improve_and_flip(tag, improve.sweeps);
   }
   for (int round = 0; round < options.cleanup_rounds; ++round) {

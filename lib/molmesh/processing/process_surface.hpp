@@ -3,6 +3,7 @@
 // feature-adaptive coarsening → normal-based smoothing → quality improvement, repeated once
 // per coarsening threshold, with edge flips where they raise angles, and a final
 // worst-triangle cleanup. Every stage is timed and measured.
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -35,6 +36,11 @@ struct ProcessingOptions {
   // Final passes of improvement + flips aimed at the worst triangles (see docs/processing.md).
   int cleanup_rounds = 3;
   bool record_stages = true;  // compute SurfaceStats after every stage
+  // Optional: moves a point onto the surface the mesh stands for (the distance-field
+  // surfaces set volume/level_set_projection.hpp's). When set, every vertex is projected
+  // after each stage that moves vertices (improvement, smoothing), so the processed mesh
+  // stays on that surface instead of shrinking with smoothing. Must be thread-safe.
+  std::function<Vec3(const Vec3&)> project;
 };
 
 struct ProcessingStage {

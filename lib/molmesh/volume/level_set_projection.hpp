@@ -1,0 +1,24 @@
+#pragma once
+// Moving points back onto a level set of a sampled field: Newton steps along the gradient of
+// the trilinear interpolant. Processing uses it (ProcessingOptions::project) to keep vertices
+// on the distance-field surfaces while it relocates and smooths them.
+#include <functional>
+#include <memory>
+
+#include "molmesh/core/geometry.hpp"
+#include "molmesh/volume/grid.hpp"
+
+namespace molmesh {
+
+// Trilinear value and gradient at p (clamped to the grid).
+double trilinear_value(const Grid& grid, const Vec3& p, Vec3* gradient = nullptr);
+
+// The point near p where the trilinear interpolant equals `level`, reached by at most 8
+// Newton steps of at most one cell each; p itself when the gradient vanishes.
+Vec3 project_to_level(const Grid& grid, double level, const Vec3& p);
+
+// project_to_level bound to a grid it keeps alive.
+std::function<Vec3(const Vec3&)> level_set_projection(std::shared_ptr<const Grid> grid,
+                                                      double level);
+
+}  // namespace molmesh
