@@ -14,6 +14,7 @@
 #include "molmesh/io/msms.hpp"
 #include "molmesh/io/stats_json.hpp"
 #include "molmesh/io/surface_mesh_io.hpp"
+#include "molmesh/pipeline/improve_pipeline.hpp"
 #include "molmesh/processing/dislocation.hpp"
 #include "molmesh/processing/mesh_repair.hpp"
 #include "molmesh/processing/process_surface.hpp"
@@ -24,25 +25,12 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-// External meshes (EDTSurf, MSMS) are far denser and more regular than marching-cubes
-// output; holding feature vertices less firmly (2 instead of 4) lets the cleanup reach the
-// paper's angle range on them: measured on EDTSurf's mAChE, min angle 28.5° instead of 21.0°
-// at the same dislocation (docs/inputs.md).
-ProcessingOptions user_mesh_processing() {
-  ProcessingOptions options;
-  options.improve.feature_weight = 2.0;
-  return options;
-}
-
 struct ImproveArgs {
   std::string input;
   std::string output;
   std::string stats;
-  std::vector<double> t0{0.2};
   bool no_coarsen = false;
-  bool repair_only = false;
-  MeshRepairOptions repair;
-  ProcessingOptions processing = user_mesh_processing();
+  ImprovePipelineOptions options;
 };
 
 SurfaceMesh read_input(const std::filesystem::path& path) {
@@ -61,21 +49,6 @@ void write_output(const std::filesystem::path& path, const SurfaceMesh& mesh) {
   }
 }
 
-nlohmann::json repair_json(const MeshRepairReport& r) {
-  nlohmann::json j;
-  j["merged_vertices"] = r.merged_vertices;
-  j["unreferenced_vertices"] = r.unreferenced_vertices;
-  j["collapsed_faces"] = r.collapsed_faces;
-  j["duplicate_faces"] = r.duplicate_faces;
-  j["flipped_cap_faces"] = r.flipped_cap_faces;
-  j["remaining_degenerate_faces"] = r.remaining_degenerate_faces;
-  j["split_vertices"] = r.split_vertices;
-  j["reoriented_faces"] = r.reoriented_faces;
-  j["reoriented_components"] = r.reoriented_components;
-  j["components"] = r.components;
-  return j;
-}
-
 void run(const ImproveArgs& args, const CliContext& ctx) {
   const Reporter reporter = ctx.reporter();
   const std::filesystem::path out_path(args.output);
@@ -91,30 +64,15 @@ void run(const ImproveArgs& args, const CliContext& ctx) {
   const SurfaceMesh input = read_input(args.input);
   reporter.progress("read", 1.0);
   timings.emplace_back("read", seconds_since(start));
-  if (input.triangles.empty()) throw InputError(args.input, "the mesh has no triangles");
 
-  start = Clock::now();
-  MeshRepairReport report;
-  SurfaceMesh repaired;
-  try {
-    repaired = repair_surface_mesh(input, args.repair, report, reporter);
-  } catch (const Error& e) {
-    throw Error(args.input + ": " + e.what());
-  }
-  timings.emplace_back("repair", seconds_since(start));
-  if (report.repairs() != "nothing to repair")
-    reporter.warn("repaired " + args.input + ": " + report.repairs());
-
-  SurfaceMesh result = repaired;
-  std::vector<ProcessingStage> stages;
-  if (!args.repair_only) {
-    ProcessingOptions options = args.processing;
-    options.t0 = args.no_coarsen ? std::vector<double>{} : args.t0;
-    ProcessingResult processed = process_surface(repaired, options, reporter);
-    for (const ProcessingStage& s : processed.stages) timings.emplace_back(s.name, s.seconds);
-    stages = std::move(processed.stages);
-    result = std::move(processed.mesh);
-  }
+  ImprovePipelineOptions options = args.options;
+  if (args.no_coarsen) options.processing.t0.clear();
+  ImprovePipelineResult improved = improve_surface(input, args.input, options, reporter);
+  timings.emplace_back("repair", improved.repair_seconds);
+  for (const ProcessingStage& s : improved.stages) timings.emplace_back(s.name, s.seconds);
+  const SurfaceMesh& repaired = improved.repaired;
+  const SurfaceMesh& result = improved.surface;
+  const MeshRepairReport& report = improved.repair;
 
   start = Clock::now();
   reporter.progress("write", 0.0);
@@ -131,18 +89,18 @@ void run(const ImproveArgs& args, const CliContext& ctx) {
     nlohmann::json in;
     in["path"] = args.input;
     in["input_surface"] = to_json(compute_surface_stats(repaired));
-    in["repair"] = repair_json(report);
+    in["repair"] = to_json(report);
     in["output"] = args.output;
     nlohmann::json parameters;
-    parameters["t0"] = args.no_coarsen ? std::vector<double>{} : args.t0;
-    parameters["rings"] = args.processing.rings;
-    parameters["sweeps"] = args.processing.improve.sweeps;
-    parameters["feature_weight"] = args.processing.improve.feature_weight;
-    parameters["smooth_normal_iterations"] = args.processing.smoothing.normal_iterations;
-    parameters["flips"] = args.processing.flips;
-    parameters["cleanup_rounds"] = args.processing.cleanup_rounds;
-    parameters["merge_tolerance"] = args.repair.merge_tolerance;
-    parameters["repair_only"] = args.repair_only;
+    parameters["t0"] = options.processing.t0;
+    parameters["rings"] = options.processing.rings;
+    parameters["sweeps"] = options.processing.improve.sweeps;
+    parameters["feature_weight"] = options.processing.improve.feature_weight;
+    parameters["smooth_normal_iterations"] = options.processing.smoothing.normal_iterations;
+    parameters["flips"] = options.processing.flips;
+    parameters["cleanup_rounds"] = options.processing.cleanup_rounds;
+    parameters["merge_tolerance"] = options.repair.merge_tolerance;
+    parameters["repair_only"] = options.repair_only;
     nlohmann::json doc = stats_document(stats, timings, in, parameters);
     doc["dislocation"] = {{"max", d.max}, {"mean", d.mean}};
     write_json_file(args.stats, doc);
@@ -171,7 +129,7 @@ const CommandRegistration registration{
                       "metrics, the repairs made, the dislocation from the (repaired) input in Å "
                       "and stage timings as JSON to this file")
           ->type_name("FILE.json");
-      cmd->add_option("--t0", args->t0,
+      cmd->add_option("--t0", args->options.processing.t0,
                       "Coarsening thresholds T0 of Eq. 6, one coarsening round each, in order "
                       "(larger removes more vertices; features survive better with several small "
                       "rounds)")
@@ -180,39 +138,39 @@ const CommandRegistration registration{
           ->type_name("T0[,T0...]");
       cmd->add_flag("--no-coarsen", args->no_coarsen,
                     "Quality improvement and smoothing only: keep every vertex");
-      cmd->add_flag("--repair-only", args->repair_only,
+      cmd->add_flag("--repair-only", args->options.repair_only,
                     "Write the repaired mesh without any processing");
-      cmd->add_option("--rings", args->processing.rings,
+      cmd->add_option("--rings", args->options.processing.rings,
                       "Neighbourhood (k-ring) of the structure tensor that tells features from "
                       "flat regions")
           ->check(CLI::Range(1, 5))
           ->capture_default_str()
           ->type_name("K");
-      cmd->add_option("--sweeps", args->processing.improve.sweeps,
+      cmd->add_option("--sweeps", args->options.processing.improve.sweeps,
                       "Passes of angle-based quality improvement over all vertices per round")
           ->check(CLI::Range(0, 100))
           ->capture_default_str()
           ->type_name("N");
-      cmd->add_option("--feature-weight", args->processing.improve.feature_weight,
+      cmd->add_option("--feature-weight", args->options.processing.improve.feature_weight,
                       "How strongly vertices on features are held in place during improvement "
                       "(0: not at all)")
           ->check(CLI::NonNegativeNumber)
           ->capture_default_str()
           ->type_name("W");
-      cmd->add_option("--smooth-iterations", args->processing.smoothing.normal_iterations,
+      cmd->add_option("--smooth-iterations", args->options.processing.smoothing.normal_iterations,
                       "Normal-diffusion iterations of the feature-preserving smoothing (0: no "
                       "smoothing)")
           ->check(CLI::Range(0, 100))
           ->capture_default_str()
           ->type_name("N");
-      cmd->add_flag("!--no-flips", args->processing.flips,
+      cmd->add_flag("!--no-flips", args->options.processing.flips,
                     "Do not flip edges to raise angles (vertices move only)");
-      cmd->add_option("--cleanup-rounds", args->processing.cleanup_rounds,
+      cmd->add_option("--cleanup-rounds", args->options.processing.cleanup_rounds,
                       "Final rounds of improvement and flips aimed at the worst triangles")
           ->check(CLI::Range(0, 100))
           ->capture_default_str()
           ->type_name("N");
-      cmd->add_option("--merge-tolerance", args->repair.merge_tolerance,
+      cmd->add_option("--merge-tolerance", args->options.repair.merge_tolerance,
                       "Vertices closer than this (Å) are merged during repair (0: only exact "
                       "duplicates)")
           ->check(CLI::NonNegativeNumber)

@@ -36,33 +36,6 @@ struct TetmeshArgs {
   SurfaceCliOptions surface;
 };
 
-nlohmann::json tet_stats_json(const TetStats& s) {
-  auto keyed = [](const std::map<int, std::size_t>& m) {
-    nlohmann::json j = nlohmann::json::object();
-    for (const auto& [k, v] : m) j[std::to_string(k)] = v;
-    return j;
-  };
-  nlohmann::json j;
-  j["vertices"] = s.vertices;
-  j["tetrahedra"] = s.tetrahedra;
-  j["boundary_faces"] = s.boundary_faces;
-  j["tetrahedra_per_region"] = keyed(s.tets_per_region);
-  j["faces_per_marker"] = keyed(s.faces_per_marker);
-  j["vertices_per_marker"] = keyed(s.vertices_per_marker);
-  j["min_dihedral_deg"] = s.min_dihedral_deg;
-  j["max_dihedral_deg"] = s.max_dihedral_deg;
-  j["dihedral_histogram_10deg"] = s.dihedral_histogram;
-  j["min_volume"] = s.min_volume;
-  j["max_volume"] = s.max_volume;
-  j["inverted_or_flat"] = s.inverted_or_flat;
-  j["min_radius_edge"] = s.min_radius_edge;
-  j["max_radius_edge"] = s.max_radius_edge;
-  j["mean_radius_edge"] = s.mean_radius_edge;
-  j["radius_edge_bins"] = TetStats::kRadiusEdgeBins;
-  j["radius_edge_histogram"] = s.radius_edge_histogram;
-  return j;
-}
-
 void run(const TetmeshArgs& args, const CliContext& ctx) {
   const Reporter reporter = ctx.reporter();
   const auto total_start = Clock::now();
@@ -122,19 +95,8 @@ void run(const TetmeshArgs& args, const CliContext& ctx) {
 
   if (!args.stats.empty()) {
     timings.emplace_back("total", seconds_since(total_start));
-    nlohmann::json doc = tet_stats_json(compute_tet_stats(mesh));
-    nlohmann::json tetgen;
-    tetgen["switches"] = report.tetgen_switches;
-    tetgen["seconds"] = report.seconds;
-    tetgen["atoms_given"] = report.atoms_given;
-    tetgen["atoms_as_nodes"] = report.atoms_as_nodes;
-    tetgen["coincident_atoms"] = report.coincident_atoms;
-    tetgen["atoms_outside"] = report.atoms_outside;
-    tetgen["surface_steiner_points"] = report.surface_steiner_points;
-    tetgen["outer_sphere_vertices"] = report.outer_sphere_vertices;
-    tetgen["molecule_size"] = report.molecule_size;
-    tetgen["outer_radius"] = report.outer_radius;
-    doc["tetgen"] = tetgen;
+    nlohmann::json doc = to_json(compute_tet_stats(mesh));
+    doc["tetgen"] = to_json(report);
     doc["domain"] = args.domain;
     doc["timings_s"] = nlohmann::json::object();
     for (const auto& [name, seconds] : timings) doc["timings_s"][name] = seconds;

@@ -9,11 +9,21 @@
 #include <utility>
 #include <vector>
 
+#include "molmesh/processing/mesh_repair.hpp"
 #include "molmesh/surface/surface_stats.hpp"
+#include "molmesh/tetmesh/tet_stats.hpp"
+#include "molmesh/tetmesh/tetrahedralize.hpp"
 
 namespace molmesh {
 
 nlohmann::json to_json(const SurfaceStats& stats);
+// `molmesh tetmesh --stats`: counts per region and marker, dihedral angles, radius-edge
+// ratios and volumes (docs/cli.md).
+nlohmann::json to_json(const TetStats& stats);
+// What `molmesh improve` repaired (the "repair" object of its --stats).
+nlohmann::json to_json(const MeshRepairReport& report);
+// The "tetgen" object of `molmesh tetmesh --stats`: switches, timing, atoms as nodes.
+nlohmann::json to_json(const TetMeshReport& report);
 SurfaceStats surface_stats_from_json(const nlohmann::json& json);
 
 // Stage timings keep their order (read, blur, marching cubes, ..., write, total).

@@ -1,0 +1,189 @@
+#include "tables.hpp"
+
+#include <pybind11/numpy.h>
+
+#include "arrays.hpp"
+#include "molmesh/io/sphere_list.hpp"
+
+namespace molmesh::python {
+
+std::vector<Sphere> to_spheres(const py::handle& value, const char* name) {
+  const InputDoubles a = InputDoubles::ensure(value);
+  if (!a) throw py::type_error(std::string(name) + " must be a sphere file or an (n, 4) array");
+  check_shape(a, 4, name);
+  std::vector<Sphere> spheres(static_cast<std::size_t>(a.shape(0)));
+  for (std::size_t i = 0; i < spheres.size(); ++i) {
+    const double* row = a.data() + 4 * i;
+    spheres[i].center = Vec3(row[0], row[1], row[2]);
+    spheres[i].radius = row[3];
+  }
+  return spheres;
+}
+
+py::object spheres_array(const std::vector<Sphere>& spheres) {
+  if (spheres.empty()) return py::none();
+  py::array_t<double> out({static_cast<py::ssize_t>(spheres.size()), py::ssize_t{4}});
+  double* p = out.mutable_data();
+  for (const Sphere& s : spheres) {
+    *p++ = s.center.x();
+    *p++ = s.center.y();
+    *p++ = s.center.z();
+    *p++ = s.radius;
+  }
+  return out;
+}
+
+namespace {
+
+bool is_path(const py::handle& v) {
+  return py::isinstance<py::str>(v) || py::hasattr(v, "__fspath__");
+}
+
+}  // namespace
+
+const OptionTable<SurfacePipelineOptions>& volume_table() {
+  static const auto table = [] {
+    OptionTable<SurfacePipelineOptions> t;
+    t.field("spacing", MOLMESH_FIELD(blur.spacing),
+            "grid spacing of the blurred volume, Å (smaller: finer surface, more memory)");
+    t.field("blobbyness", MOLMESH_FIELD(blur.blobbyness),
+            "blobbyness B < 0 of the Gaussian kernel exp(B(|x-c|^2/r^2 - 1)) for atoms without "
+            "their own");
+    t.field("isovalue", MOLMESH_FIELD(isovalue),
+            "level of the blurred volume that is the surface (1 on a lone atom's sphere)");
+    t.field("truncation", MOLMESH_FIELD(blur.truncation),
+            "kernel cut off below truncation * isovalue");
+    t.choice("blur", MOLMESH_FIELD(blur_method),
+             std::vector<std::pair<std::string, BlurMethod>>{{"exact", BlurMethod::kExact},
+                                                             {"fast", BlurMethod::kFast}},
+             "Eq. 1 summed atom by atom, or Eq. 2 with one decay rate and a recursive filter");
+    t.field("min_cavity_volume", MOLMESH_FIELD(min_cavity_volume),
+            "drop interior cavities enclosing less than this, Å^3 (0 keeps all)");
+    return t;
+  }();
+  return table;
+}
+
+const OptionTable<ProcessingOptions>& processing_table() {
+  static const auto table = [] {
+    OptionTable<ProcessingOptions> t;
+    t.field("rings", MOLMESH_FIELD(rings),
+            "k-ring of the local structure tensor that detects features");
+    t.field("alpha", MOLMESH_FIELD(alpha), "Eq. 6 exponent of the longest incident edge");
+    t.field("beta", MOLMESH_FIELD(beta), "Eq. 6 exponent of lambda2/lambda1 (curvature)");
+    t.field("sweeps", MOLMESH_FIELD(improve.sweeps),
+            "passes of angle-based quality improvement per round");
+    t.field("feature_weight", MOLMESH_FIELD(improve.feature_weight),
+            "how strongly feature vertices are held in place during improvement");
+    t.field("smooth_iterations", MOLMESH_FIELD(smoothing.normal_iterations),
+            "normal-diffusion iterations of the smoothing (0: none)");
+    t.field("flips", MOLMESH_FIELD(flips), "flip edges to raise angles");
+    t.field("cleanup_rounds", MOLMESH_FIELD(cleanup_rounds),
+            "final rounds of improvement and flips aimed at the worst triangles");
+    return t;
+  }();
+  return table;
+}
+
+const OptionTable<SurfacePipelineOptions>& surface_table() {
+  static const auto table = [] {
+    OptionTable<SurfacePipelineOptions> t;
+    t.nest(
+        volume_table(), [](SurfacePipelineOptions & o) -> auto& { return o; });
+    t.field("coarsen", MOLMESH_FIELD(processing.t0),
+            "coarsening thresholds T0 of Eq. 6, one round each ([] = improve only)");
+    t.nest(processing_table(), MOLMESH_FIELD(processing));
+    t.field("raw", MOLMESH_FIELD(raw),
+            "stop after marching cubes: no improvement, coarsening or smoothing");
+    t.custom(
+        "keep_spheres",
+        [](SurfacePipelineOptions& o, py::handle v) {
+          o.keep_spheres_file.clear();
+          o.processing.keep_spheres.clear();
+          if (v.is_none()) return;
+          if (is_path(v))
+            o.keep_spheres_file = py::cast<std::filesystem::path>(v).string();
+          else
+            o.processing.keep_spheres = to_spheres(v, "keep_spheres");
+        },
+        [](const SurfacePipelineOptions& o) -> py::object {
+          if (!o.keep_spheres_file.empty()) return py::str(o.keep_spheres_file);
+          return spheres_array(o.processing.keep_spheres);
+        },
+        "sphere file or (n, 4) array (x, y, z, r in Å): no vertex inside is removed by "
+        "coarsening");
+    t.field("keep_volume", MOLMESH_FIELD(keep_volume),
+            "also return the blurred volume as report['volume'] (atom input)");
+    return t;
+  }();
+  return table;
+}
+
+const OptionTable<ImprovePipelineOptions>& improve_table() {
+  static const auto table = [] {
+    OptionTable<ImprovePipelineOptions> t;
+    t.field("t0", MOLMESH_FIELD(processing.t0),
+            "coarsening thresholds T0 of Eq. 6, one round each ([] = no coarsening)");
+    t.nest(processing_table(), MOLMESH_FIELD(processing));
+    t.field("repair_only", MOLMESH_FIELD(repair_only), "repair without any processing");
+    t.field("merge_tolerance", MOLMESH_FIELD(repair.merge_tolerance),
+            "vertices closer than this (Å) are merged during repair");
+    return t;
+  }();
+  return table;
+}
+
+const OptionTable<TetMeshOptions>& tetmesh_table() {
+  static const auto table = [] {
+    OptionTable<TetMeshOptions> t;
+    t.choice(
+        "domain", MOLMESH_FIELD(domain),
+        std::vector<std::pair<std::string, Domain>>{
+            {"interior", Domain::interior}, {"exterior", Domain::exterior}, {"full", Domain::full}},
+        "the molecule (region 1), the solvent up to the outer sphere (region 2), or both");
+    t.field("sphere_ratio", MOLMESH_FIELD(sphere_ratio),
+            "outer sphere radius as a multiple of the molecule size");
+    t.field("outer_radius", MOLMESH_FIELD(outer_radius),
+            "outer sphere radius, Å (None: from sphere_ratio)");
+    t.field("sphere_subdivisions", MOLMESH_FIELD(outer_sphere_subdivisions),
+            "outer sphere: icosahedron subdivided L times (10*4^L+2 vertices)");
+    t.custom(
+        "active_site",
+        [](TetMeshOptions& o, py::handle v) {
+          o.active_site.clear();
+          if (v.is_none()) return;
+          o.active_site = is_path(v) ? read_spheres(py::cast<std::filesystem::path>(v))
+                                     : to_spheres(v, "active_site");
+        },
+        [](const TetMeshOptions& o) { return spheres_array(o.active_site); },
+        "sphere file or (n, 4) array: molecular-surface faces inside get marker 3");
+    t.field("max_radius_edge", MOLMESH_FIELD(max_radius_edge_ratio),
+            "TetGen -q radius-edge ratio bound");
+    t.field("min_dihedral", MOLMESH_FIELD(min_dihedral_deg),
+            "TetGen -q minimum dihedral angle, degrees");
+    t.field("max_volume", MOLMESH_FIELD(max_volume),
+            "TetGen -a largest tetrahedron volume, Å^3 (None: unbounded)");
+    t.field("size_factor", MOLMESH_FIELD(size_factor),
+            "size grading (TetGen -m): target size = mean edge length x factor (0: off)");
+    t.field("tetgen_switches", MOLMESH_FIELD(tetgen_switches),
+            "expert: TetGen switches replacing the ones above");
+    return t;
+  }();
+  return table;
+}
+
+const OptionTable<HierarchyOptions>& hierarchy_table() {
+  static const auto table = [] {
+    OptionTable<HierarchyOptions> t;
+    t.field("t0", MOLMESH_FIELD(t0), "one level per coarsening threshold T0, finest first");
+    t.field("size_growth", MOLMESH_FIELD(size_growth),
+            "level L meshes its volume with size_factor * size_growth^L");
+    t.field("renumber", MOLMESH_FIELD(renumber), "reverse Cuthill-McKee on every volume mesh");
+    t.nest(processing_table(), MOLMESH_FIELD(processing));
+    t.nest(tetmesh_table(), MOLMESH_FIELD(tetmesh));
+    return t;
+  }();
+  return table;
+}
+
+}  // namespace molmesh::python

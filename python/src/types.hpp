@@ -1,0 +1,45 @@
+#pragma once
+// The Python-visible objects. Each holds the library's plain type through a shared_ptr to
+// const (levels of a hierarchy alias into the Hierarchy they belong to), so arrays are
+// read-only numpy views with no copy, and `report`/`raw` carry what the stage measured.
+// These structs are only created and destroyed by Python, with the GIL held, so they may
+// hold Python objects.
+#include <pybind11/pybind11.h>
+
+#include <memory>
+
+#include "molmesh/atoms/atom.hpp"
+#include "molmesh/hierarchy/hierarchy.hpp"
+#include "molmesh/surface/surface_mesh.hpp"
+#include "molmesh/tetmesh/tet_mesh.hpp"
+#include "molmesh/volume/grid.hpp"
+
+namespace molmesh::python {
+
+namespace py = pybind11;
+
+struct PyAtoms {
+  std::shared_ptr<const Atoms> atoms;
+};
+
+struct PySurface {
+  std::shared_ptr<const SurfaceMesh> mesh;
+  py::object raw = py::none();     // surface(): marching cubes output; improve(): repaired input
+  py::object report = py::none();  // dict: stages, timings, ... of the stage that made it
+};
+
+struct PyTetMesh {
+  std::shared_ptr<const TetMesh> mesh;
+  py::object report = py::none();
+};
+
+struct PyVolume {
+  std::shared_ptr<const Grid> grid;
+};
+
+struct PyHierarchy {
+  std::shared_ptr<const Hierarchy> hierarchy;
+  py::object report = py::none();
+};
+
+}  // namespace molmesh::python

@@ -1,0 +1,103 @@
+"""molmesh.hierarchy and molmesh.read_hierarchy against `molmesh hierarchy` on the same
+molecule: the same meshes on every level and the same prolongations, bit for bit."""
+import numpy as np
+import pytest
+
+import molmesh
+from conftest import DATA, run_cli
+
+T0 = [0.1, 0.3, 0.5]
+
+
+@pytest.fixture(scope="module")
+def cli_file(tmp_path_factory):
+    out = tmp_path_factory.mktemp("hierarchy")
+    run_cli("hierarchy", DATA / "1a1p.pqr", "-o", out / "h.h5", "--t0", ",".join(map(str, T0)),
+            "--domain", "exterior")
+    return out / "h.h5"
+
+
+@pytest.fixture(scope="module")
+def built():
+    return molmesh.hierarchy(molmesh.read_atoms(DATA / "1a1p.pqr"), t0=T0, domain="exterior")
+
+
+def assert_same_tetmesh(a, b):
+    for name in ["vertices", "tetrahedra", "cell_markers", "vertex_markers", "boundary_faces",
+                 "boundary_face_markers"]:
+        assert np.array_equal(getattr(a, name), getattr(b, name)), name
+
+
+def assert_same_csr(a, b):
+    assert a.shape == b.shape
+    assert np.array_equal(a.indptr, b.indptr) and np.array_equal(a.indices, b.indices)
+    assert np.array_equal(a.data, b.data)
+
+
+def test_hierarchy_is_the_clis_bit_for_bit(built, cli_file):
+    cli = molmesh.read_hierarchy(cli_file)
+    assert len(built) == len(cli) == 3
+    for mine, theirs in zip(built.levels, cli.levels):
+        assert mine.t0 == theirs.t0
+        assert np.array_equal(mine.surface.vertices, theirs.surface.vertices)
+        assert np.array_equal(mine.surface.faces, theirs.surface.faces)
+        assert np.array_equal(mine.surface_provenance, theirs.surface_provenance)
+        assert np.array_equal(mine.volume_permutation, theirs.volume_permutation)
+        assert_same_tetmesh(mine.volume, theirs.volume)
+    for p, q in zip(built.prolongations + built.surface_prolongations,
+                    cli.prolongations + cli.surface_prolongations):
+        assert_same_csr(p, q)
+    assert cli.parameters["domain"] == "exterior" and cli.input_name == "1a1p.pqr"
+
+
+def test_prolongations_are_scipy_csr_matching_h5py(built, cli_file):
+    h5py = pytest.importorskip("h5py")
+    import scipy.sparse
+
+    with h5py.File(cli_file, "r") as f:
+        for i, p in enumerate(built.prolongations):
+            assert isinstance(p, scipy.sparse.csr_matrix)
+            g = f[f"/transfer/{i + 1}_to_{i}/volume"]
+            q = scipy.sparse.csr_matrix((g["data"][:], g["indices"][:], g["indptr"][:]),
+                                        shape=tuple(g.attrs["shape"]))
+            assert_same_csr(p, q)
+            fine, coarse = built.levels[i].volume, built.levels[i + 1].volume
+            assert p.shape == (len(fine.vertices), len(coarse.vertices))
+            np.testing.assert_allclose(p.sum(axis=1), 1.0, rtol=1e-12)  # rows sum to 1
+
+
+def test_write_and_read_back(tmp_path, built):
+    built.write(tmp_path / "mine.h5")
+    back = molmesh.read_hierarchy(tmp_path / "mine.h5")
+    for a, b in zip(built.levels, back.levels):
+        assert_same_tetmesh(a.volume, b.volume)
+    assert back.parameters["domain"] == "'exterior'"
+    field = np.arange(len(back.levels[0].volume.vertices), dtype=float)
+    molmesh.write_point_field(tmp_path / "mine.h5", 0, "index", field)
+    assert molmesh.point_field_names(tmp_path / "mine.h5", 0) == ["index"]
+    np.testing.assert_array_equal(molmesh.read_point_field(tmp_path / "mine.h5", 0, "index"), field)
+    meshio = pytest.importorskip("meshio")
+    m = meshio.read(tmp_path / "mine_L0_volume.xdmf")
+    assert len(m.points) == len(field)
+
+
+def test_views_keep_the_hierarchy_alive(cli_file):
+    import gc
+
+    def coarsest_vertices():
+        h = molmesh.read_hierarchy(cli_file)
+        view = h.levels[-1].volume.vertices
+        return view, view.copy()  # h, its level and its mesh go out of scope here
+
+    view, copy = coarsest_vertices()
+    gc.collect()
+    molmesh.read_hierarchy(cli_file)  # reuse freed memory, if any was freed
+    assert np.array_equal(view, copy)
+
+
+def test_not_a_hierarchy_is_an_input_error(tmp_path):
+    bogus = tmp_path / "x.h5"
+    bogus.write_text("not hdf5\n")
+    with pytest.raises(molmesh.InputError) as info:
+        molmesh.read_hierarchy(bogus)
+    assert info.value.file == str(bogus)

@@ -1,0 +1,81 @@
+"""molmesh.tetmesh against `molmesh tetmesh` on the same molecule."""
+import numpy as np
+import pytest
+
+import molmesh
+from conftest import DATA, read_json, run_cli
+
+
+@pytest.fixture(scope="module")
+def atoms():
+    return molmesh.read_atoms(DATA / "1a1p.pqr")
+
+
+@pytest.fixture(scope="module")
+def cli_full(tmp_path_factory):
+    out = tmp_path_factory.mktemp("tetmesh")
+    run_cli("tetmesh", DATA / "1a1p.pqr", "-o", out / "t.m", "--stats", out / "t.json",
+            "--surface-output", out / "s.ply")
+    return molmesh.read_tetmesh(out / "t.m"), read_json(out / "t.json"), out
+
+
+@pytest.fixture(scope="module")
+def full(atoms):
+    return molmesh.tetmesh(atoms)
+
+
+def test_tetmesh_is_the_clis(full, cli_full):
+    cli_mesh, cli_stats, out = cli_full
+    stats = full.stats()
+    # Every quality number agrees to the last bit (they are computed from the mesh).
+    assert stats == {k: cli_stats[k] for k in stats}
+    tetgen = dict(full.report["tetgen"], seconds=None)
+    assert tetgen == dict(cli_stats["tetgen"], seconds=None)
+    assert np.array_equal(full.tetrahedra, cli_mesh.tetrahedra)
+    assert np.array_equal(full.cell_markers, cli_mesh.cell_markers)
+    # MCSF stores 11 significant digits.
+    np.testing.assert_allclose(full.vertices, cli_mesh.vertices, rtol=1e-9, atol=1e-9)
+    surface = molmesh.read_surface(out / "s.ply")
+    assert np.array_equal(full.report["surface"].vertices, surface.vertices)
+
+
+def test_arrays_and_markers(full):
+    assert full.vertices.dtype == np.float64 and full.vertices.shape[1] == 3
+    assert full.tetrahedra.dtype == np.int32 and full.tetrahedra.shape[1] == 4
+    assert set(np.unique(full.cell_markers)) == {1, 2}
+    assert set(np.unique(full.boundary_face_markers)) <= {1, 2, 3}
+    assert len(full.vertex_markers) == len(full.vertices)
+
+
+def test_surface_input_with_atoms_is_the_same_mesh(atoms, full):
+    again = molmesh.tetmesh(full.report["surface"], atoms)
+    assert np.array_equal(again.tetrahedra, full.tetrahedra)
+    assert np.array_equal(again.vertices, full.vertices)
+
+
+def test_exterior_options(tmp_path, atoms):
+    run_cli("tetmesh", DATA / "1a1p.pqr", "-o", tmp_path / "e.m", "--domain", "exterior",
+            "--sphere-ratio", "10", "--stats", tmp_path / "e.json", "--spacing", "0.8")
+    mesh = molmesh.tetmesh(atoms, domain="exterior", sphere_ratio=10, spacing=0.8)
+    cli = read_json(tmp_path / "e.json")
+    assert mesh.stats() == {k: cli[k] for k in mesh.stats()}
+    assert mesh.report["parameters"]["spacing"] == 0.8
+    assert set(np.unique(mesh.cell_markers)) == {2}
+
+
+def test_meshio_conversion_and_vtu(tmp_path, full):
+    meshio = pytest.importorskip("meshio")
+    m = full.to_meshio(point_data={"x": full.vertices[:, 0].copy()})
+    assert len(m.cells_dict["tetra"]) == len(full.tetrahedra)
+    meshio.write(tmp_path / "m.vtu", m)
+    full.write(tmp_path / "w.vtu", point_fields={"x": full.vertices[:, 0]})
+    back = meshio.read(tmp_path / "w.vtu")
+    np.testing.assert_array_equal(back.cells_dict["tetra"], full.tetrahedra)
+    np.testing.assert_allclose(back.point_data["x"], full.vertices[:, 0], rtol=1e-8)
+
+
+def test_open_surface_is_an_error(full):
+    s = full.report["surface"]
+    holed = molmesh.Surface(s.vertices, s.faces[:-20])
+    with pytest.raises(molmesh.Error):
+        molmesh.tetmesh(holed)
