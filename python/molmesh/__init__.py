@@ -8,7 +8,7 @@ are numpy views (read-only, no copy) with documented dtypes and shapes::
     surf = molmesh.surface(atoms, progress=lambda stage, f: print(stage, f))
     tets = molmesh.tetmesh(surf, atoms, domain="exterior")
     h = molmesh.hierarchy(atoms, t0=[0.1, 0.3, 0.5], domain="exterior")
-    result = molmesh.solve_smoluchowski(h)
+    result = molmesh.solve_smoluchowski(h)   # result.rate_constant, M^-1 s^-1
 
 Keyword defaults are the library's (and the CLI's): ``molmesh.defaults("surface")``.
 docs/python.md in the source tree is the guide.
@@ -19,6 +19,7 @@ from ._core import (
     Error,
     Hierarchy,
     HierarchyLevel,
+    SolveResult,
     InputError,
     OutputError,
     Surface,
@@ -37,6 +38,8 @@ from ._core import (
     read_surface,
     read_tetmesh,
     read_volume,
+    solve_poisson,
+    solve_smoluchowski,
     surface,
     tetmesh,
     thread_limit,
@@ -48,8 +51,5 @@ from ._meshio import tetmesh_to_meshio as _tetmesh_to_meshio
 
 Surface.to_meshio = _surface_to_meshio
 TetMesh.to_meshio = _tetmesh_to_meshio
-
-if hasattr(_core, "solve_smoluchowski"):
-    from ._core import SolveResult, solve_poisson, solve_smoluchowski  # noqa: F401
 
 __all__ = [name for name in dir() if not name.startswith("_")]

@@ -12,6 +12,7 @@ void bind_surface(pybind11::module_& m);
 void bind_improve(pybind11::module_& m);
 void bind_tetmesh(pybind11::module_& m);
 void bind_hierarchy(pybind11::module_& m);
+void bind_solvers(pybind11::module_& m);
 void bind_io(pybind11::module_& m);
 
 // molmesh.defaults(name): the keyword defaults of function `name`, registered by each

@@ -72,6 +72,7 @@ PYBIND11_MODULE(_core, m) {
   mp::bind_improve(m);
   mp::bind_tetmesh(m);
   mp::bind_hierarchy(m);
+  mp::bind_solvers(m);
   mp::bind_io(m);
 
   m.def(

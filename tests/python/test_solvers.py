@@ -1,0 +1,72 @@
+"""molmesh.solve_smoluchowski and molmesh.solve_poisson against `molmesh solve` on the
+same hierarchy file: the same rate constant and solvation energy, bit for bit."""
+import numpy as np
+import pytest
+
+import molmesh
+from conftest import DATA, read_json, run_cli
+
+
+@pytest.fixture(scope="module")
+def cli_hierarchy(tmp_path_factory):
+    out = tmp_path_factory.mktemp("solve")
+    run_cli("hierarchy", DATA / "1a1p.pqr", "-o", out / "h.h5", "--t0", "0.1,0.3,0.5",
+            "--domain", "full")
+    return out / "h.h5"
+
+
+@pytest.fixture(scope="module")
+def hierarchy(cli_hierarchy):
+    return molmesh.read_hierarchy(cli_hierarchy)
+
+
+@pytest.mark.parametrize("level", [0, 1])
+def test_rate_is_the_clis(tmp_path, cli_hierarchy, hierarchy, level):
+    run_cli("solve", "smoluchowski", cli_hierarchy, "--level", level, "--json",
+            tmp_path / "s.json", "--no-fields")
+    cli = read_json(tmp_path / "s.json")
+    result = molmesh.solve_smoluchowski(hierarchy, level=level)
+    assert result.rate_constant == cli["rate_constant_M-1s-1"]
+    assert result.rate_constant_A3_per_s == cli["rate_constant_A3_per_s"]
+    assert result.iterations == cli["iterations"] and result.converged
+    assert result.report["residual_history"] == cli["residual_history"]
+    c = result.fields["concentration"]
+    assert c.shape == (len(hierarchy.levels[level].volume.vertices),)
+    assert 0.0 <= c.min() and c.max() <= 1.0 + 1e-9
+
+
+def test_solver_options_and_fields_match_the_cli(tmp_path, cli_hierarchy, hierarchy):
+    run_cli("solve", "smoluchowski", cli_hierarchy, "--json", tmp_path / "s.json",
+            "--preconditioner", "ic", "--tolerance", "1e-6")
+    cli = read_json(tmp_path / "s.json")
+    result = molmesh.solve_smoluchowski(hierarchy, preconditioner="ic", tolerance=1e-6)
+    assert result.rate_constant == cli["rate_constant_M-1s-1"]
+    stored = molmesh.read_point_field(cli_hierarchy, 0, "concentration")
+    assert np.array_equal(stored, result.fields["concentration"])
+
+
+def test_solvation_energy_is_the_clis(tmp_path, cli_hierarchy, hierarchy):
+    run_cli("solve", "poisson", cli_hierarchy, "--pqr", DATA / "1a1p.pqr", "--json",
+            tmp_path / "p.json", "--no-fields")
+    cli = read_json(tmp_path / "p.json")
+    result = molmesh.solve_poisson(hierarchy, molmesh.read_atoms(DATA / "1a1p.pqr"))
+    assert result.solvation_energy == cli["solvation_energy_kJ_per_mol"]
+    assert result.solvation_energy < 0
+    assert result.report["iterations"] == cli["iterations"]
+
+
+def test_progress_can_abort_a_solve(hierarchy):
+    class Stop(Exception):
+        pass
+
+    def stop(stage, fraction):
+        if stage.startswith("smoluchowski: solve"):
+            raise Stop()
+
+    with pytest.raises(Stop):
+        molmesh.solve_smoluchowski(hierarchy, progress=stop)
+
+
+def test_bad_level_is_an_error(hierarchy):
+    with pytest.raises(molmesh.Error, match="level 7"):
+        molmesh.solve_smoluchowski(hierarchy, level=7)
