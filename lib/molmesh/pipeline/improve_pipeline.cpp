@@ -1,10 +1,10 @@
 #include "molmesh/pipeline/improve_pipeline.hpp"
 
-#include <chrono>
 #include <string>
 #include <utility>
 
 #include "molmesh/core/error.hpp"
+#include "molmesh/core/timing.hpp"
 
 namespace molmesh {
 
@@ -26,8 +26,7 @@ ImprovePipelineResult improve_surface(const SurfaceMesh& input, std::string_view
   } catch (const Error& e) {
     throw Error(label + ": " + e.what());
   }
-  result.repair_seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  result.repair_seconds = seconds_since(start);
   if (result.repair.repairs() != "nothing to repair")
     reporter.warn("repaired " + label + ": " + result.repair.repairs());
   if (options.repair_only) {
