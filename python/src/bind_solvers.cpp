@@ -13,7 +13,7 @@
 #include "molmesh/core/error.hpp"
 #include "molmesh/io/volume_io.hpp"
 #include "progress.hpp"
-#include "solvers/physics/grid_interpolation.hpp"
+#include "solvers/physics/hierarchy_solve.hpp"
 #include "solvers/physics/poisson.hpp"
 #include "solvers/physics/smoluchowski.hpp"
 #include "tables.hpp"
@@ -24,45 +24,18 @@ namespace {
 
 using solvers::LinearSolverOptions;
 
-// Which levels of the hierarchy one solve uses. Left for later: this mirrors
-// `molmesh solve`'s level selection (tools/molmesh/cmd_solve.cpp), which the solvers area
-// is moving into solvers/ this session; bind that entry point instead once it lands.
 struct SolveSetup {
-  int level = 0;       // level to solve on (0 = finest)
-  int max_levels = 0;  // at most this many multigrid levels counting `level` (0 = all)
-  bool mesh_coarse_operators = true;
+  solvers::HierarchySolveOptions levels;  // level, max_levels, coarse operators
   LinearSolverOptions solver;
 };
-
-struct Levels {
-  const TetMesh* mesh = nullptr;
-  std::vector<SparseMatrix> prolongations;
-  std::vector<const TetMesh*> coarse_meshes;  // with mesh coarse operators under multigrid
-};
-
-Levels select_levels(const Hierarchy& h, const SolveSetup& s) {
-  const int count = static_cast<int>(h.levels.size());
-  if (s.level < 0 || s.level >= count)
-    throw Error("level " + std::to_string(s.level) + ": the hierarchy has " +
-                std::to_string(count) + " level(s)");
-  Levels out;
-  out.mesh = &h.levels[static_cast<std::size_t>(s.level)].volume;
-  int last = count - 1;
-  if (s.max_levels > 0) last = std::min(last, s.level + s.max_levels - 1);
-  for (int l = s.level; l < last; ++l) out.prolongations.push_back(h.transfers.at(l).volume);
-  if (s.mesh_coarse_operators && s.solver.preconditioning == solvers::Preconditioning::kMultigrid) {
-    for (int l = s.level + 1; l <= last; ++l) out.coarse_meshes.push_back(&h.levels[l].volume);
-  }
-  return out;
-}
 
 // Keyword tables. Solver defaults come from LinearSolverOptions (and its SolveOptions,
 // MultigridOptions), the physics defaults from SmoluchowskiOptions / PoissonOptions.
 const OptionTable<SolveSetup>& setup_table() {
   static const auto table = [] {
     OptionTable<SolveSetup> t;
-    t.field("level", MOLMESH_FIELD(level), "level to solve on (0 = finest)");
-    t.field("levels", MOLMESH_FIELD(max_levels),
+    t.field("level", MOLMESH_FIELD(levels.level), "level to solve on (0 = finest)");
+    t.field("levels", MOLMESH_FIELD(levels.max_levels),
             "use at most this many multigrid levels, counting the solve level (0 = all)");
     t.choice("preconditioner", MOLMESH_FIELD(solver.preconditioning),
              std::vector<std::pair<std::string, solvers::Preconditioning>>{
@@ -76,8 +49,10 @@ const OptionTable<SolveSetup>& setup_table() {
             "Gauss-Seidel sweeps before and after each coarse correction");
     t.field("smoothing_blocks", MOLMESH_FIELD(solver.multigrid.smoothing_blocks),
             "Gauss-Seidel row blocks run in parallel (results depend on it, not on threads)");
-    t.choice("coarse_operators", MOLMESH_FIELD(mesh_coarse_operators),
-             std::vector<std::pair<std::string, bool>>{{"mesh", true}, {"galerkin", false}},
+    t.choice("coarse_operators", MOLMESH_FIELD(levels.coarse_operators),
+             std::vector<std::pair<std::string, solvers::CoarseOperators>>{
+                 {"mesh", solvers::CoarseOperators::kMesh},
+                 {"galerkin", solvers::CoarseOperators::kGalerkin}},
              "coarse operators discretised on each coarse mesh, or Galerkin P^T A P");
     return t;
   }();
@@ -196,39 +171,12 @@ void bind_solvers(py::module_& m) {
           grid = std::make_shared<const Grid>(read_volume(path));
         }
         const std::shared_ptr<const Hierarchy> hierarchy = h.hierarchy;
-        struct Out {
-          solvers::SmoluchowskiResult result;
-          std::vector<double> beta_w;
-          int outside = 0;
-        };
         PythonProgress bridge(progress);
-        Out out = bridge.run([&](const Reporter& r) {
-          Out o;
-          const Levels levels = select_levels(*hierarchy, setup);
-          auto beta_w_at = [&](const TetMesh& mesh, int* outside) {
-            std::vector<double> values;
-            if (!grid) return values;
-            auto field = solvers::interpolate_trilinear(*grid, mesh.points);
-            if (outside) *outside = field.outside;
-            for (double& v : field.values) v *= charge;
-            return field.values;
-          };
-          o.beta_w = beta_w_at(*levels.mesh, &o.outside);
-          if (o.outside > 0)
-            r.warn(std::to_string(o.outside) +
-                   " mesh vertices lie outside the potential grid; "
-                   "they take the value at the nearest grid point");
-          std::vector<std::vector<double>> coarse_beta_w;
-          coarse_beta_w.reserve(levels.coarse_meshes.size());
-          std::vector<solvers::CoarseLevel> coarse;
-          for (const TetMesh* c : levels.coarse_meshes) {
-            coarse_beta_w.push_back(beta_w_at(*c, nullptr));
-            coarse.push_back({c, coarse_beta_w.back()});
-          }
-          o.result = solvers::solve_smoluchowski(*levels.mesh, o.beta_w, levels.prolongations,
-                                                 options, r, coarse);
-          return o;
+        solvers::HierarchySmoluchowskiResult out = bridge.run([&](const Reporter& r) {
+          return solvers::solve_smoluchowski(*hierarchy, setup.levels, options, grid.get(), charge,
+                                             r);
         });
+        const int outside = out.vertices_outside_potential_grid;
         PySolveResult result;
         result.rate_constant = out.result.rate_constant_per_molar_per_s;
         result.rate_constant_A3_per_s = out.result.rate_constant_A3_per_s;
@@ -241,7 +189,7 @@ void bind_solvers(py::module_& m) {
         result.report["absorbing_vertices"] = out.result.absorbing_vertices;
         result.report["bulk_vertices"] = out.result.bulk_vertices;
         result.report["isolated_cavity_vertices"] = out.result.isolated_vertices;
-        result.report["vertices_outside_potential_grid"] = out.outside;
+        result.report["vertices_outside_potential_grid"] = outside;
         result.report["rate_constant_A3_per_s"] = out.result.rate_constant_A3_per_s;
         result.report["rate_constant_M-1s-1"] = out.result.rate_constant_per_molar_per_s;
         py::dict parameters = setup_table().values(setup);
@@ -281,9 +229,7 @@ void bind_solvers(py::module_& m) {
         const std::shared_ptr<const Atoms> charges = atoms.atoms;
         PythonProgress bridge(progress);
         solvers::PoissonResult out = bridge.run([&](const Reporter& r) {
-          const Levels levels = select_levels(*hierarchy, setup);
-          return solvers::solve_solvation_energy(*levels.mesh, *charges, levels.prolongations,
-                                                 options, r, levels.coarse_meshes);
+          return solvers::solve_solvation_energy(*hierarchy, setup.levels, *charges, options, r);
         });
         PySolveResult result;
         result.solvation_energy = out.solvation_energy_kj_per_mol;
