@@ -196,9 +196,9 @@ TEST(Pqr, ErrorsNameFileAndLine) {
   expect_input_error([&] { parse_pqr(ok + "ATOM 2 N ALA X 0 0 0 0 1.8\n", "f.pqr"); },
                      {"f.pqr:3:", "residue number 'X'"});
   expect_input_error([&] { parse_pqr(ok + "ATOM 2 N ALA 1 nan 0 0 0 1.8\n", "f.pqr"); },
-                     {"f.pqr:3:", "not finite"});
+                     {"f.pqr:3:", "is not a finite number"});
   expect_input_error([&] { parse_pqr(ok + "ATOM 2 N ALA 1 inf 0 0 0 1.8\n", "f.pqr"); },
-                     {"f.pqr:3:", "not finite"});
+                     {"f.pqr:3:", "is not a finite number"});
   expect_input_error([&] { parse_pqr(ok + "ATOM 2 N ALA 1 0 0 0 0 -1.5\n", "f.pqr"); },
                      {"f.pqr:3:", "negative radius -1.5"});
   expect_input_error([&] { parse_pqr(ok + "ATOM 2 N ALA 1 0 0 0 nan 1.5\n", "f.pqr"); },
@@ -207,6 +207,26 @@ TEST(Pqr, ErrorsNameFileAndLine) {
                      {"f.pqr:3:", "cannot tell"});
   expect_input_error([&] { parse_pqr(ok + "ATOM 2 N ALA B A1 0 0 0 0 1.5\n", "f.pqr"); },
                      {"f.pqr:3:", "two chain"});
+}
+
+// Issue 18, finding 1: a word among x y z q r used to take a neighbour's value (the parser
+// dereferenced an empty optional); every such field must be refused at its line.
+TEST(Pqr, NonNumbersAmongTheValuesAreRefusedNeverShifted) {
+  const std::string ok = "ATOM 1 N ALA 1 0 0 0 0 1.8\n";
+  for (const char* bad : {"abc", "1e400", "0x10", "1,5", "nan", "inf", "-inf", "1.5x"}) {
+    for (int column = 0; column < 5; ++column) {
+      std::string values[5] = {"0", "0", "0", "0", "1.5"};
+      values[column] = bad;
+      std::string record = "ATOM 2 C ALA 1";
+      for (const auto& v : values) record += " " + v;
+      SCOPED_TRACE(record);
+      expect_input_error([&] { parse_pqr(ok + record + "\n", "r.pqr"); },
+                         {"r.pqr:2:", "'" + std::string(bad) + "'", "is not a finite number"});
+    }
+  }
+  // With a chain column, too.
+  expect_input_error([&] { parse_pqr(ok + "ATOM 2 C ALA A 1 abc 0 0 0 1.5\n", "r.pqr"); },
+                     {"r.pqr:2: x coordinate 'abc' is not a finite number"});
 }
 
 TEST(Pqr, FileLevelErrors) {

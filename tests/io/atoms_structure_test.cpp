@@ -82,12 +82,17 @@ TEST(Structure, ApbsExamplePdbFilesReadOrFailWithALine) {
       while (std::getline(in, line)) {
         if (line.rfind("ATOM", 0) != 0 && line.rfind("HETATM", 0) != 0) continue;
         ++records;
-        if (line.size() > 16 && line[16] != ' ') has_altloc = true;
+        // (Tab-separated records have no column 17.)
+        if (line.size() > 16 && line[16] != ' ' && line.find('\t') == std::string::npos)
+          has_altloc = true;
       }
     }
     int warnings = 0;
     Reporter reporter;
-    reporter.on_warning = [&](std::string_view) { ++warnings; };
+    // Records outside the fixed columns are read with their own warning (reader_robustness).
+    reporter.on_warning = [&](std::string_view m) {
+      if (m.find("whitespace-separated fields") == std::string_view::npos) ++warnings;
+    };
     try {
       const Atoms atoms = read_atoms(entry.path(), {}, reporter);
       ++ok;
@@ -222,7 +227,7 @@ TEST(RadiusTable, LookupPrecedenceAndWildcards) {
 
 TEST(RadiusTable, Errors) {
   expect_input_error([] { read_radius_table(write_text("a.txt", "C 1.7\nARG NH1\n")); },
-                     {"a.txt:2:", "radius 'NH1' is not a number"});
+                     {"a.txt:2:", "radius 'NH1' is not a finite number"});
   expect_input_error([] { read_radius_table(write_text("b.txt", "C 1 2 3\n")); },
                      {"b.txt:1:", "expected"});
   expect_input_error([] { read_radius_table(write_text("c.txt", "C -1.7\n")); },

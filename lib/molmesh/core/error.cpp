@@ -3,11 +3,31 @@
 namespace molmesh {
 namespace {
 
+// Messages quote file contents, which may hold any byte. A NUL would cut what() short and a
+// CR or escape sequence would garble the terminal, so control bytes are shown as \xHH
+// (tab kept). Every InputError passes here: the one place messages are made safe.
+std::string printable(const std::string& raw) {
+  static constexpr char kHex[] = "0123456789abcdef";
+  std::string out;
+  out.reserve(raw.size());
+  for (const char c : raw) {
+    const auto u = static_cast<unsigned char>(c);
+    if ((u < 0x20 && c != '\t') || u == 0x7f) {
+      out += "\\x";
+      out += kHex[u >> 4];
+      out += kHex[u & 0xf];
+    } else {
+      out += c;
+    }
+  }
+  return out;
+}
+
 std::string located(const std::string& file, std::size_t line, const std::string& message) {
   std::string text = file;
   if (line > 0) text.append(":").append(std::to_string(line));
   text.append(": ").append(message);
-  return text;
+  return printable(text);
 }
 
 }  // namespace

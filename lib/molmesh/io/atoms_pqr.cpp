@@ -88,11 +88,20 @@ Atom parse_record(std::string_view line, const std::string& name, std::size_t n)
     if (extra.size() <= 2 && is_alpha(extra[0]) && (extra.size() == 1 || is_alpha(extra[1])))
       atom.element = std::string(extra);
   }
-  if (end < 5 + 4)
+  if (end < 5 + 4) {
+    // Enough fields, but the trailing ones are words: a bad number ("nan"), not an extra.
+    if (tokens.size() >= 5 + 4)
+      throw InputError(name, n,
+                       io_detail::quoted(tokens[end]) + " is not a finite number; " + kLayout);
     throw InputError(name, n, std::string("too few fields for a PQR atom; ") + kLayout);
+  }
+  // The last five numbers are x y z charge radius; each must be one: a word among them is
+  // an error, never skipped (a skip would shift a neighbour's value into its place).
+  static constexpr const char* kColumn[5] = {"x coordinate", "y coordinate", "z coordinate",
+                                             "charge", "radius"};
   double values[5];
-  for (int i = 0; i < 5; ++i)
-    values[i] = *parse_double(tokens[end - 5 + static_cast<std::size_t>(i)]);
+  for (std::size_t i = 0; i < 5; ++i)
+    values[i] = io_detail::require_double(tokens[end - 5 + i], kColumn[i], name, n);
   const std::size_t head = end - 5;  // tokens[0..head): serial, names, residue number
 
   const ResidueNumber resnum = parse_residue_number(tokens[head - 1]);
@@ -121,9 +130,6 @@ Atom parse_record(std::string_view line, const std::string& name, std::size_t n)
   atom.charge = values[3];
   atom.radius = values[4];
 
-  if (!atom.center.allFinite()) throw InputError(name, n, "coordinates are not finite numbers");
-  if (!std::isfinite(atom.charge)) throw InputError(name, n, "charge is not a finite number");
-  if (!std::isfinite(atom.radius)) throw InputError(name, n, "radius is not a finite number");
   if (atom.radius < 0.0)
     throw InputError(name, n,
                      "negative radius " + std::string(tokens[end - 1]) +
@@ -145,6 +151,7 @@ bool is_atom_record(std::string_view first_field) {
 }  // namespace
 
 Atoms parse_pqr(std::string_view text, const std::string& name, const Reporter& reporter) {
+  io_detail::require_no_nul(text, name);
   Atoms atoms;
   io_detail::LineCursor lines(text);
   std::string_view line;

@@ -5,66 +5,80 @@
 #include <gemmi/cif.hpp>
 #include <gemmi/mmcif.hpp>
 #include <gemmi/pdb.hpp>
+#include <optional>
 #include <set>
+#include <string_view>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 #include "molmesh/core/error.hpp"
+#include "molmesh/io/pdb_records.hpp"
 #include "molmesh/io/text_input.hpp"
 
 namespace molmesh {
 namespace {
 
-// Serial number -> line, so that later problems (an element without a radius) can point
-// at the record. The first record with a serial wins; gemmi keeps records in file order.
-// Also checks the coordinate columns strictly: gemmi reads "-7.1x8" as -7.1 without a word.
-std::unordered_map<int, std::size_t> scan_pdb_records(const std::string& contents,
-                                                      const std::string& name) {
-  std::unordered_map<int, std::size_t> lines;
-  io_detail::LineCursor cursor(contents);
-  std::string_view line;
-  while (cursor.next(line)) {
-    if (line.substr(0, 6) != "ATOM  " && line.substr(0, 6) != "HETATM") continue;
-    const std::size_t n = cursor.line_number();
-    if (line.size() < 54)
-      throw InputError(name, n, "ATOM/HETATM record too short for coordinates (columns 31-54)");
-    for (std::size_t k = 0; k < 3; ++k) {
-      const std::string_view column = io_detail::trim(line.substr(30 + 8 * k, 8));
-      const auto value = io_detail::parse_double(column);
-      if (!value)
-        throw InputError(name, n,
-                         std::string(1, "xyz"[k]) + " coordinate '" + std::string(column) +
-                             "' (columns " + std::to_string(31 + 8 * k) + "-" +
-                             std::to_string(38 + 8 * k) + ") is not a number");
-      if (!std::isfinite(*value)) throw InputError(name, n, "coordinates are not finite numbers");
-    }
-    const auto serial = io_detail::parse_integer(io_detail::trim(line.substr(6, 5)));
-    if (serial) lines.emplace(static_cast<int>(*serial), n);
-  }
-  return lines;
+// gemmi's mmCIF errors read "NAME:LINE:COLUMN(BYTE): message" (PEGTL's position);
+// returns the line and the message after the position, or nullopt for other messages.
+std::optional<std::pair<std::size_t, std::string>> cif_position(std::string_view what) {
+  std::size_t i = 0;
+  while (i < what.size() && what[i] == ':') ++i;
+  std::size_t j = i;
+  while (j < what.size() && std::isdigit(static_cast<unsigned char>(what[j]))) ++j;
+  if (j == i || j >= what.size() || what[j] != ':') return std::nullopt;
+  const auto line = io_detail::parse_integer(what.substr(i, j - i));
+  std::size_t k = what.find(": ", j + 1);
+  if (!line || k == std::string_view::npos) return std::nullopt;
+  return std::pair{static_cast<std::size_t>(*line), std::string(what.substr(k + 2))};
 }
 
 }  // namespace
 
 StructureAtoms parse_structure(const std::string& contents, const std::string& name, bool mmcif,
                                const Reporter& reporter) {
-  const auto lines =
-      mmcif ? std::unordered_map<int, std::size_t>{} : scan_pdb_records(contents, name);
+  // gemmi stops a record at a NUL byte and silently drops the next one.
+  io_detail::require_no_nul(contents, name);
+  if (io_detail::trim(contents).empty())
+    throw InputError(name,
+                     std::string("empty file: no ") + (mmcif ? "mmCIF data" : "ATOM records"));
+  io_detail::PdbScan scan;
+  if (!mmcif) {
+    scan = io_detail::scan_pdb_records(contents, name);
+    if (scan.whitespace_records > 0)
+      reporter.warn(name + ": " + std::to_string(scan.whitespace_records) +
+                    " ATOM/HETATM records are not in the fixed PDB columns (tabs or shifted "
+                    "fields, first at line " +
+                    std::to_string(scan.first_whitespace_line) +
+                    "); read from their whitespace-separated fields instead");
+  }
+  const std::string& text = scan.rewritten ? *scan.rewritten : contents;
   gemmi::Structure st;
   try {
     if (mmcif) {
-      st = gemmi::make_structure(
-          gemmi::cif::read_memory(contents.data(), contents.size(), name.c_str()));
+      gemmi::cif::Document doc = gemmi::cif::read_memory(text.data(), text.size(), name.c_str());
+      if (doc.blocks.empty()) throw InputError(name, "no data_ block: not an mmCIF file");
+      st = gemmi::make_structure(std::move(doc));
     } else {
-      st = gemmi::read_pdb_from_memory(contents.data(), contents.size(), name);
+      st = gemmi::read_pdb_from_memory(text.data(), text.size(), name);
     }
+  } catch (const InputError&) {
+    throw;
+  } catch (const std::out_of_range& e) {
+    // make_structure indexes tables a damaged file may lack ("vector::_M_range_check").
+    throw InputError(name, std::string("cannot parse as ") + (mmcif ? "mmCIF" : "PDB") +
+                               ": required data missing or malformed (" + e.what() + ")");
   } catch (const std::exception& e) {
-    // gemmi's messages already say what is wrong (and often where).
-    std::string what = e.what();
-    if (what.rfind(name, 0) == 0) what = what.substr(name.size());
-    while (!what.empty() && (what.front() == ':' || what.front() == ' ')) what.erase(0, 1);
-    throw InputError(name, "cannot parse as " + std::string(mmcif ? "mmCIF" : "PDB") + ": " + what);
+    // gemmi's messages already say what is wrong (and often where): put it in file:line form.
+    std::string_view what = e.what();
+    if (what.substr(0, name.size()) == name) what.remove_prefix(name.size());
+    const std::string format = mmcif ? "mmCIF" : "PDB";
+    if (const auto at = cif_position(what))
+      throw InputError(name, at->first, "cannot parse as " + format + ": " + at->second);
+    while (!what.empty() && (what.front() == ':' || what.front() == ' ')) what.remove_prefix(1);
+    throw InputError(name, "cannot parse as " + format + ": " + std::string(what));
   }
+  const auto& lines = scan.lines;
   StructureAtoms out;
   if (st.models.empty()) return out;
   if (st.models.size() > 1)

@@ -4,13 +4,10 @@
 #include <algorithm>
 #include <array>
 #include <cctype>
-#include <charconv>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
-#include <fstream>
 #include <optional>
-#include <sstream>
 #include <string>
 #include <string_view>
 #include <unordered_map>
@@ -20,6 +17,7 @@
 #include "molmesh/core/error.hpp"
 #include "molmesh/geometry/predicates.hpp"
 #include "molmesh/geometry/tetrahedron.hpp"
+#include "molmesh/io/text_input.hpp"
 
 namespace molmesh {
 namespace {
@@ -104,21 +102,32 @@ class Lexer {
 
   long long integer(const char* what) {
     const auto t = next();
-    long long v = 0;
-    const auto r = std::from_chars(t.data(), t.data() + t.size(), v);
-    if (t.empty() || r.ec != std::errc() || r.ptr != t.data() + t.size())
-      fail(std::string("expected an integer (") + what + ") but found '" + std::string(t) + "'");
-    return v;
+    const auto v = io_detail::parse_integer(t);
+    if (!v)
+      fail(std::string("expected an integer (") + what + ") but found " +
+           (t.empty() ? std::string("end of file") : io_detail::quoted(t)));
+    return *v;
+  }
+
+  // An integer stored as int (markers, face types): larger magnitudes are refused, not
+  // wrapped.
+  int small_integer(const char* what) {
+    const long long v = integer(what);
+    if (v < -(1ll << 30) || v > (1ll << 30))
+      fail(std::string(what) + " " + std::to_string(v) + " is out of range (|value| <= 2^30)");
+    return static_cast<int>(v);
   }
 
   double real(const char* what) {
     const auto t = next();
-    double v = 0;
-    const auto r = std::from_chars(t.data(), t.data() + t.size(), v);
-    if (t.empty() || r.ec != std::errc() || r.ptr != t.data() + t.size() || !std::isfinite(v))
-      fail(std::string("expected a number (") + what + ") but found '" + std::string(t) + "'");
-    return v;
+    const auto v = io_detail::parse_double(t);
+    if (!v)
+      fail(std::string("expected a finite number (") + what + ") but found " +
+           (t.empty() ? std::string("end of file") : io_detail::quoted(t)));
+    return *v;
   }
+
+  std::size_t size() const { return text_.size(); }
 
   std::size_t line() const { return token_line_; }
 
@@ -221,11 +230,9 @@ void write_mcsf(const std::filesystem::path& path, const TetMesh& mesh,
 }
 
 TetMesh read_mcsf(const std::filesystem::path& path, const McsfFaceTypes& types) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path.string(), "cannot open the MCSF file");
-  std::ostringstream buffer;
-  buffer << in.rdbuf();
-  Lexer lex(buffer.str(), path.string());
+  std::string text = io_detail::read_file_contents(path);
+  io_detail::require_no_nul(text, path.string());
+  Lexer lex(std::move(text), path.string());
 
   auto key_value = [&](std::string_view key) {
     lex.expect(key);
@@ -241,6 +248,12 @@ TetMesh read_mcsf(const std::filesystem::path& path, const McsfFaceTypes& types)
   const long long n_simplices = key_value("simplices");
   if (n_vertices <= 0 || n_simplices <= 0 || n_vertices > (1ll << 31) || n_simplices > (1ll << 31))
     lex.fail("vertex and simplex counts must be positive");
+  // Each vertex row has 5 fields and each simplex row 11, at least 2 bytes each: a header
+  // announcing more than the file can hold is refused before memory is reserved for it.
+  if (n_vertices * 10 + n_simplices * 22 > static_cast<long long>(lex.size()))
+    lex.fail("the header announces " + std::to_string(n_vertices) + " vertices and " +
+             std::to_string(n_simplices) + " simplices, more than the file's " +
+             std::to_string(lex.size()) + " bytes can hold (truncated?)");
 
   TetMesh mesh;
   mesh.points.resize(static_cast<std::size_t>(n_vertices));
@@ -264,8 +277,8 @@ TetMesh read_mcsf(const std::filesystem::path& path, const McsfFaceTypes& types)
   for (long long t = 0; t < n_simplices; ++t) {
     if (lex.integer("simplex id") != t) lex.fail("simplex ids must be 0, 1, 2, ... in order");
     lex.integer("group");
-    mesh.cell_markers[t] = static_cast<int>(lex.integer("material"));
-    for (int k = 0; k < 4; ++k) face_types[t][k] = static_cast<int>(lex.integer("face type"));
+    mesh.cell_markers[t] = lex.small_integer("material");
+    for (int k = 0; k < 4; ++k) face_types[t][k] = lex.small_integer("face type");
     for (int k = 0; k < 4; ++k) {
       const long long v = lex.integer("vertex number");
       if (v < 0 || v >= n_vertices)

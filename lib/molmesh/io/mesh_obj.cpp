@@ -10,6 +10,7 @@ namespace molmesh {
 
 SurfaceMesh parse_obj(std::string_view text, const std::string& name) {
   using namespace io_detail;
+  require_no_nul(text, name);
   SurfaceMesh mesh;
   LineCursor lines(text);
   std::string_view line;

@@ -36,6 +36,7 @@ long long count_field(std::string_view field, const std::string& name, std::size
 }  // namespace
 
 SurfaceMesh parse_off(std::string_view text, const std::string& name) {
+  require_no_nul(text, name);
   LineCursor lines(text);
   std::vector<std::string_view> fields;
   if (!next_content(lines, fields)) throw InputError(name, "empty file: no OFF header");
@@ -57,8 +58,10 @@ SurfaceMesh parse_off(std::string_view text, const std::string& name) {
       static_cast<std::size_t>(count_field(fields[0], name, counts_line, "vertex count"));
   const auto nf = static_cast<std::size_t>(count_field(fields[1], name, counts_line, "face count"));
 
+  // A vertex line holds 3 fields of >= 2 bytes with their separators: never reserve more
+  // than the file can hold (a count of 2^63 used to throw length_error, exit 70).
   SurfaceMesh mesh;
-  mesh.points.reserve(nv);
+  mesh.points.reserve(reservable(nv, 6, lines.remaining()));
   for (std::size_t i = 0; i < nv; ++i) {
     if (!next_content(lines, fields))
       throw InputError(

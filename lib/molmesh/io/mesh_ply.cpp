@@ -115,6 +115,15 @@ class BodyReader {
   }
 
   std::size_t line() const { return encoding_ == Encoding::Ascii ? line_ : 0; }
+  std::size_t remaining() const { return pos_ < bytes_.size() ? bytes_.size() - pos_ : 0; }
+  // The fewest bytes one item of `e` can take: its scalars and list counts (lists may be
+  // empty); an ascii value takes at least 2 bytes with its separator.
+  std::size_t min_item_bytes(const Element& e) const {
+    std::size_t bytes = 0;
+    for (const Property& p : e.properties)
+      bytes += encoding_ == Encoding::Ascii ? 2 : type_size(p.list ? p.count_type : p.type);
+    return bytes;
+  }
   std::string where() const {
     return encoding_ == Encoding::Ascii ? "" : " (byte " + std::to_string(pos_) + ")";
   }
@@ -146,10 +155,9 @@ class BodyReader {
            bytes_[end] != '\n' && bytes_[end] != '\r')
       ++end;
     const std::string_view field(bytes_.data() + pos_, end - pos_);
-    const auto value = parse_double(field);
-    if (!value) throw InputError(name_, line_, "'" + std::string(field) + "' is not a number");
+    const double value = require_double(field, "value", name_, line_);
     pos_ = end;
-    return *value;
+    return value;
   }
 
   const std::string& bytes_;
@@ -226,6 +234,15 @@ SurfaceMesh parse_ply(const std::string& bytes, const std::string& name) {
   std::size_t vertex_count = 0;
   bool seen_vertices = false;
   BodyReader body(bytes, header_end, lines.line_number() + 1, *encoding, name);
+  // Indices and markers are integers that fit an int; a float of 1e30 or NaN is refused
+  // (converting it would be undefined behaviour).
+  auto integral = [&](double v, const char* what, std::size_t item_line) -> long long {
+    if (!(std::abs(v) < 2147483648.0) || v != std::floor(v))
+      throw InputError(
+          name, item_line,
+          std::string(what) + " " + std::to_string(v) + " is not an integer" + body.where());
+    return static_cast<long long>(v);
+  };
   std::vector<long long> corners;
   for (const Element& e : elements) {
     const bool is_vertex = e.name == "vertex";
@@ -249,9 +266,16 @@ SurfaceMesh parse_ply(const std::string& bytes, const std::string& name) {
       throw InputError(name, e.header_line, "face element lacks a vertex_indices list");
     if (is_face && !seen_vertices)
       throw InputError(name, e.header_line, "face element before the vertex element");
+    if (e.count > 0 && e.properties.empty())
+      throw InputError(
+          name, e.header_line,
+          "element '" + e.name + "' has " + std::to_string(e.count) + " items but no properties");
     if (is_vertex) {
-      mesh.points.reserve(e.count);
-      if (marker >= 0) mesh.vertex_markers.reserve(e.count);
+      // Never more than the body can hold (the last ascii value may lack a separator); a
+      // short body is reported where it ends.
+      const std::size_t n = reservable(e.count, body.min_item_bytes(e), body.remaining() + 1);
+      mesh.points.reserve(n);
+      if (marker >= 0) mesh.vertex_markers.reserve(n);
     }
     for (std::size_t item = 0; item < e.count; ++item) {
       const std::size_t item_line = body.line();
@@ -263,23 +287,20 @@ SurfaceMesh parse_ply(const std::string& bytes, const std::string& name) {
         const int k = static_cast<int>(i);
         if (prop.list) {
           const double count = body.read(prop.count_type);
-          if (count < 0 || count > 1e6)
+          // Negated so that NaN (a float count type) is refused too.
+          if (!(count >= 0 && count <= 1e6) || count != std::floor(count))
             throw InputError(name, item_line,
                              "invalid list length " + std::to_string(count) + body.where());
           for (long long c = 0; c < static_cast<long long>(count); ++c) {
             const double v = body.read(prop.type);
-            if (k == indices) {
-              if (v != std::floor(v))
-                throw InputError(name, item_line, "vertex index is not an integer");
-              corners.push_back(static_cast<long long>(v));
-            }
+            if (k == indices) corners.push_back(integral(v, "vertex index", item_line));
           }
         } else {
           const double v = body.read(prop.type);
           if (is_vertex && k == xyz[0]) p.x() = v;
           if (is_vertex && k == xyz[1]) p.y() = v;
           if (is_vertex && k == xyz[2]) p.z() = v;
-          if (k == marker) mark = static_cast<int>(v);
+          if (k == marker) mark = static_cast<int>(integral(v, "marker", item_line));
         }
       }
       if (is_vertex) {

@@ -61,6 +61,7 @@ SurfaceMesh parse_binary(const std::string& bytes, const std::string& name) {
 }
 
 SurfaceMesh parse_ascii(const std::string& text, const std::string& name) {
+  require_no_nul(text, name);
   SurfaceMesh mesh;
   VertexMerger merger(mesh);
   LineCursor lines(text);
@@ -68,12 +69,16 @@ SurfaceMesh parse_ascii(const std::string& text, const std::string& name) {
   std::vector<int> corners;
   std::size_t facet_line = 0;
   bool solid = false;
+  bool open = false;  // inside solid ... endsolid: a file cut at a facet boundary stays open
   while (lines.next(line)) {
     const auto f = split_fields(line);
     if (f.empty()) continue;
     const std::size_t n = lines.line_number();
     if (f[0] == "solid") {
-      solid = true;
+      if (open) throw InputError(name, n, "'solid' inside another solid (missing endsolid?)");
+      solid = open = true;
+    } else if (!open) {
+      throw InputError(name, n, "'" + std::string(f[0]) + "' outside solid ... endsolid");
     } else if (f[0] == "facet") {
       if (facet_line != 0)
         throw InputError(name, n, "'facet' inside another facet (missing endfacet)");
@@ -91,7 +96,10 @@ SurfaceMesh parse_ascii(const std::string& text, const std::string& name) {
             "facet has " + std::to_string(corners.size()) + " vertices (STL facets are triangles)");
       mesh.triangles.push_back({corners[0], corners[1], corners[2]});
       facet_line = 0;
-    } else if (f[0] == "outer" || f[0] == "endloop" || f[0] == "endsolid") {
+    } else if (f[0] == "endsolid") {
+      if (facet_line != 0) throw InputError(name, facet_line, "facet not closed before 'endsolid'");
+      open = false;
+    } else if (f[0] == "outer" || f[0] == "endloop") {
       // structure only
     } else {
       throw InputError(name, n, "unexpected '" + std::string(f[0]) + "' in ascii STL");
@@ -99,6 +107,9 @@ SurfaceMesh parse_ascii(const std::string& text, const std::string& name) {
   }
   if (!solid) throw InputError(name, 1, "not an STL file (no 'solid' line, wrong size for binary)");
   if (facet_line != 0) throw InputError(name, facet_line, "facet not closed (file truncated?)");
+  if (open)
+    throw InputError(name, lines.line_number(),
+                     "ascii STL ends without 'endsolid' (file truncated?)");
   return mesh;
 }
 

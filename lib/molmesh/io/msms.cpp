@@ -27,6 +27,7 @@ void read_table(const std::filesystem::path& path, std::size_t min_fields, const
                 Row&& row) {
   const std::string text = read_file_contents(path);
   const std::string name = path.string();
+  require_no_nul(text, name);
   LineCursor lines(text);
   std::string_view line;
   long long expected = -1;
@@ -76,29 +77,18 @@ SurfaceMesh read_msms(const std::filesystem::path& path) {
   const auto vert = with_extension(path, ".vert");
   const auto face = with_extension(path, ".face");
   SurfaceMesh mesh;
-  read_table(
-      vert, 3, "vertices",
-      [&](const std::vector<std::string_view>& f, const std::string& name, std::size_t line) {
-        Vec3 p;
-        for (int i = 0; i < 3; ++i) {
-          const auto v = parse_double(f[static_cast<std::size_t>(i)]);
-          if (!v) {
-            throw InputError(
-                name, line,
-                "not a coordinate: '" + std::string(f[static_cast<std::size_t>(i)]) + "'");
-          }
-          p[i] = *v;
-        }
-        mesh.points.push_back(p);
-      });
+  read_table(vert, 3, "vertices",
+             [&](const std::vector<std::string_view>& f, const std::string& name,
+                 std::size_t line) { mesh.points.push_back(parse_point(f, 0, name, line)); });
   read_table(
       face, 3, "faces",
       [&](const std::vector<std::string_view>& f, const std::string& name, std::size_t line) {
         std::vector<long long> corners(3);
         for (std::size_t i = 0; i < 3; ++i) {
-          const auto v = parse_integer(f[i]);
-          if (!v) throw InputError(name, line, "not a vertex number: '" + std::string(f[i]) + "'");
-          corners[i] = *v - 1;  // MSMS counts from 1
+          const long long v = require_integer(f[i], "vertex number", name, line);
+          if (v < 1)
+            throw InputError(name, line, "vertex numbers start at 1, found " + std::to_string(v));
+          corners[i] = v - 1;  // MSMS counts from 1
         }
         append_polygon(corners, mesh.points.size(), mesh.triangles, name, line);
       });

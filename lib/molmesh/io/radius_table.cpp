@@ -11,6 +11,7 @@ RadiusTable read_radius_table(const std::filesystem::path& path) {
   using namespace io_detail;
   const std::string name = path.string();
   const std::string text = read_file_contents(path);
+  require_no_nul(text, name);
   RadiusTable table;
   table.source = name;
   LineCursor lines(text);
@@ -25,19 +26,16 @@ RadiusTable read_radius_table(const std::filesystem::path& path) {
       throw InputError(name, n,
                        "expected 'RESNAME ATOMNAME radius' or 'ELEMENT radius', found " +
                            std::to_string(fields.size()) + " fields");
-    const auto radius = parse_double(fields.back());
-    if (!radius)
-      throw InputError(name, n, "radius '" + std::string(fields.back()) + "' is not a number");
-    if (!std::isfinite(*radius) || *radius < 0.0)
-      throw InputError(name, n,
-                       "radius must be finite and >= 0, found " + std::string(fields.back()));
+    const double radius = require_double(fields.back(), "radius", name, n);
+    if (radius < 0.0)
+      throw InputError(name, n, "radius must be >= 0, found " + std::string(fields.back()));
     bool inserted = false;
     if (fields.size() == 2) {
-      inserted = table.by_element.emplace(to_upper(fields[0]), *radius).second;
+      inserted = table.by_element.emplace(to_upper(fields[0]), radius).second;
     } else {
-      inserted = table.by_residue_atom
-                     .emplace(std::pair{to_upper(fields[0]), to_upper(fields[1])}, *radius)
-                     .second;
+      inserted =
+          table.by_residue_atom.emplace(std::pair{to_upper(fields[0]), to_upper(fields[1])}, radius)
+              .second;
     }
     if (!inserted) throw InputError(name, n, "duplicate entry (an earlier line has the same key)");
   }

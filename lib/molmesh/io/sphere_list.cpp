@@ -11,6 +11,7 @@ std::vector<Sphere> read_spheres(const std::filesystem::path& path) {
   using namespace io_detail;
   const std::string name = path.string();
   const std::string text = read_file_contents(path);
+  require_no_nul(text, name);
   std::vector<Sphere> spheres;
   LineCursor lines(text);
   std::string_view line;
@@ -25,12 +26,8 @@ std::vector<Sphere> read_spheres(const std::filesystem::path& path) {
           name, n,
           "expected 'x y z radius' (4 numbers), found " + std::to_string(f.size()) + " fields");
     double v[4];
-    for (std::size_t k = 0; k < 4; ++k) {
-      const auto value = parse_double(f[k]);
-      if (!value || !std::isfinite(*value))
-        throw InputError(name, n, "'" + std::string(f[k]) + "' is not a finite number");
-      v[k] = *value;
-    }
+    static constexpr const char* kWhat[4] = {"x", "y", "z", "radius"};
+    for (std::size_t k = 0; k < 4; ++k) v[k] = require_double(f[k], kWhat[k], name, n);
     if (v[3] < 0.0) throw InputError(name, n, "negative sphere radius " + std::string(f[3]));
     spheres.push_back({Vec3(v[0], v[1], v[2]), v[3]});
   }

@@ -106,22 +106,72 @@ std::string_view trim(std::string_view s) {
 }
 
 std::optional<double> parse_double(std::string_view field) {
-  if (field.empty()) return std::nullopt;
-  // from_chars rejects a leading '+', which some writers emit.
-  if (field.front() == '+') field.remove_prefix(1);
+  // from_chars rejects a leading '+', which some writers emit (but not "+-1" or "+").
+  if (!field.empty() && field.front() == '+') {
+    field.remove_prefix(1);
+    if (field.empty() || field.front() == '+' || field.front() == '-') return std::nullopt;
+  }
   double value = 0.0;
+  // General format: no hex; "1e400" gives result_out_of_range.
+  const auto [end, ec] =
+      std::from_chars(field.data(), field.data() + field.size(), value, std::chars_format::general);
+  if (ec != std::errc() || end != field.data() + field.size()) return std::nullopt;
+  // from_chars reads "nan" and "inf" as numbers; data never holds them.
+  if (!std::isfinite(value)) return std::nullopt;
+  return value;
+}
+
+std::optional<long long> parse_integer(std::string_view field) {
+  if (!field.empty() && field.front() == '+') {
+    field.remove_prefix(1);
+    if (field.empty() || field.front() == '-') return std::nullopt;
+  }
+  long long value = 0;
   const auto [end, ec] = std::from_chars(field.data(), field.data() + field.size(), value);
   if (ec != std::errc() || end != field.data() + field.size()) return std::nullopt;
   return value;
 }
 
-std::optional<long long> parse_integer(std::string_view field) {
-  if (field.empty()) return std::nullopt;
-  if (field.front() == '+') field.remove_prefix(1);
-  long long value = 0;
-  const auto [end, ec] = std::from_chars(field.data(), field.data() + field.size(), value);
-  if (ec != std::errc() || end != field.data() + field.size()) return std::nullopt;
-  return value;
+std::string quoted(std::string_view field) {
+  constexpr std::size_t kMax = 40;
+  if (field.size() <= kMax) return "'" + std::string(field) + "'";
+  return "'" + std::string(field.substr(0, kMax)) + "...' (" + std::to_string(field.size()) +
+         " characters)";
+}
+
+double require_double(std::string_view field, std::string_view what, const std::string& name,
+                      std::size_t line) {
+  const auto value = parse_double(field);
+  if (!value)
+    throw InputError(name, line,
+                     std::string(what) + " " + quoted(field) + " is not a finite number");
+  return *value;
+}
+
+long long require_integer(std::string_view field, std::string_view what, const std::string& name,
+                          std::size_t line) {
+  const auto value = parse_integer(field);
+  if (!value)
+    throw InputError(name, line, std::string(what) + " " + quoted(field) + " is not an integer");
+  return *value;
+}
+
+std::optional<std::size_t> checked_product(std::initializer_list<std::size_t> factors) {
+  std::size_t product = 1;
+  for (const std::size_t f : factors)
+    if (__builtin_mul_overflow(product, f, &product)) return std::nullopt;
+  return product;
+}
+
+void require_no_nul(std::string_view text, const std::string& name) {
+  const std::size_t nul = text.find('\0');
+  if (nul == std::string_view::npos) return;
+  const auto line = static_cast<std::size_t>(std::count(
+                        text.begin(), text.begin() + static_cast<std::ptrdiff_t>(nul), '\n')) +
+                    1;
+  throw InputError(
+      name, line,
+      "NUL byte in a text file (binary data or a corrupt file; byte " + std::to_string(nul) + ")");
 }
 
 void append_number(std::string& out, double value) {
@@ -148,14 +198,8 @@ void flush_when_large(std::ostream& out, std::string& text) {
 Vec3 parse_point(const std::vector<std::string_view>& fields, std::size_t first,
                  const std::string& name, std::size_t line) {
   Vec3 p;
-  for (std::size_t k = 0; k < 3; ++k) {
-    const auto v = parse_double(fields[first + k]);
-    if (!v || !std::isfinite(*v)) {
-      throw InputError(
-          name, line, "coordinate '" + std::string(fields[first + k]) + "' is not a finite number");
-    }
-    p[static_cast<Eigen::Index>(k)] = *v;
-  }
+  for (std::size_t k = 0; k < 3; ++k)
+    p[static_cast<Eigen::Index>(k)] = require_double(fields[first + k], "coordinate", name, line);
   return p;
 }
 

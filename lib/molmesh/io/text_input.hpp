@@ -2,9 +2,11 @@
 // Shared helpers for the readers: load a whole file (gunzipping .gz), walk its lines with
 // line numbers, split fields and parse numbers strictly, so every reader reports errors
 // the same way ("file:line: what").
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <filesystem>
+#include <initializer_list>
 #include <optional>
 #include <ostream>
 #include <string>
@@ -30,6 +32,8 @@ class LineCursor {
   // False at the end of the text.
   bool next(std::string_view& line);
   std::size_t line_number() const { return line_number_; }
+  // Bytes after the current line.
+  std::size_t remaining() const { return pos_ < text_.size() ? text_.size() - pos_ : 0; }
 
  private:
   std::string_view text_;
@@ -42,9 +46,37 @@ std::vector<std::string_view> split_fields(std::string_view line, bool commas = 
 
 std::string_view trim(std::string_view s);
 
-// Whole-field parses; nullopt unless the entire field is one number.
+// Whole-field parses: nullopt unless the entire field is one finite number in plain
+// decimal notation (an optional sign, digits, a point, an exponent). "nan", "inf", "1e400"
+// (overflow), "0x10", "1,5", "1.5abc" and "" are not numbers: every reader takes its numbers
+// from here, so none can misread such a field as data (docs/inputs.md, "Numbers").
 std::optional<double> parse_double(std::string_view field);
 std::optional<long long> parse_integer(std::string_view field);
+
+// The same, throwing InputError at name:line: "WHAT 'field' is not a finite number" /
+// "... is not an integer".
+double require_double(std::string_view field, std::string_view what, const std::string& name,
+                      std::size_t line);
+long long require_integer(std::string_view field, std::string_view what, const std::string& name,
+                          std::size_t line);
+
+// A field as quoted in a message: "'abc'", cut to 40 characters so a megabyte-long token
+// does not flood the terminal (control bytes are escaped by InputError itself).
+std::string quoted(std::string_view field);
+
+// The product of sample counts, or nullopt when it does not fit in size_t.
+std::optional<std::size_t> checked_product(std::initializer_list<std::size_t> factors);
+
+// How many of `count` announced items to reserve memory for: no more than `available` bytes
+// can hold at `min_bytes` each. Readers reserve this and let the read itself report a short
+// file at the line where it ends, so a header announcing 2^63 items costs nothing.
+inline std::size_t reservable(std::size_t count, std::size_t min_bytes, std::size_t available) {
+  return min_bytes == 0 ? 0 : std::min(count, available / min_bytes);
+}
+
+// Text formats carry no NUL bytes; one means binary data or a corrupt file (and would cut
+// records short in parsers that stop at NUL). Throws InputError at the NUL's line.
+void require_no_nul(std::string_view text, const std::string& name);
 
 // Three finite numbers from fields[first..first+2] (a vertex's coordinates); throws
 // InputError at `line` naming the offending field.

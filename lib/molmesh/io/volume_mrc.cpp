@@ -8,6 +8,7 @@
 #include <cstring>
 
 #include "molmesh/core/error.hpp"
+#include "molmesh/io/text_input.hpp"
 
 namespace molmesh {
 namespace {
@@ -101,15 +102,23 @@ Grid parse_mrc(const std::string& bytes, const std::string& name) {
                                  " is not supported (modes 0, 1, 2 and 6 are: real-valued maps)");
   }
   if (nsymbt < 0) throw InputError(name, "header: negative extended header size NSYMBT");
-  const std::size_t count = static_cast<std::size_t>(n[0]) * static_cast<std::size_t>(n[1]) *
-                            static_cast<std::size_t>(n[2]);
+  // Checked arithmetic: 2^22 x 2^21 x 2^21 samples wrap a plain product to 0, which
+  // would pass the size check and leave the grid empty.
   const std::size_t data_start = kHeaderBytes + static_cast<std::size_t>(nsymbt);
-  if (bytes.size() < data_start + count * value_bytes)
+  const auto count =
+      io_detail::checked_product({static_cast<std::size_t>(n[0]), static_cast<std::size_t>(n[1]),
+                                  static_cast<std::size_t>(n[2])});
+  const auto data_bytes = count ? io_detail::checked_product({*count, value_bytes}) : std::nullopt;
+  const std::string shape = std::to_string(n[0]) + "x" + std::to_string(n[1]) + "x" +
+                            std::to_string(n[2]) + " values of " + std::to_string(value_bytes) +
+                            " bytes";
+  if (!data_bytes || bytes.size() < data_start || bytes.size() - data_start < *data_bytes)
     throw InputError(name, "file has " + std::to_string(bytes.size()) + " bytes but the header (" +
-                               std::to_string(n[0]) + "x" + std::to_string(n[1]) + "x" +
-                               std::to_string(n[2]) + " values of " + std::to_string(value_bytes) +
-                               " bytes) needs " + std::to_string(data_start + count * value_bytes) +
-                               " (truncated?)");
+                               shape + ", after " + std::to_string(data_start) +
+                               " header bytes) needs " +
+                               (data_bytes ? std::to_string(data_start + *data_bytes)
+                                           : std::string("more than 2^64")) +
+                               " (truncated file or corrupt header?)");
 
   // File axis f (0 = columns, fastest) runs along space axis axis[f]-1.
   Grid grid;
@@ -142,7 +151,7 @@ Grid parse_mrc(const std::string& bytes, const std::string& name) {
     }
   }
 
-  grid.values.assign(count, 0.0);
+  grid.values.assign(*count, 0.0);
   const char* data = bytes.data() + data_start;
   std::array<int, 3> idx{};
   std::size_t r = 0;
