@@ -1,0 +1,12 @@
+// Fuzz target: PDB reader (gemmi behind molmesh's record scan).
+#include "fuzz_checks.hpp"
+#include "fuzz_support.hpp"
+#include "molmesh/io/atoms_structure.hpp"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  molmesh::fuzz::expect_clean([&] {
+    molmesh::fuzz::check(
+        molmesh::parse_structure(molmesh::fuzz::bytes(data, size), "fuzz.pdb", false).atoms);
+  });
+  return 0;
+}
