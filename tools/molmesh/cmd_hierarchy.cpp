@@ -74,6 +74,7 @@ void run(const HierarchyArgs& args, const CliContext& ctx) {
   surface_options.isovalue = args.isovalue;
   surface_options.min_cavity_volume = args.min_cavity_volume;
   surface_options.raw = true;  // each level does its own processing with its own T0
+  surface_options.measure = false;
   const auto surface = surface_from_atoms(atoms, surface_options, reporter);
 
   HierarchyOptions options;

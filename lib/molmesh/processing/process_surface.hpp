@@ -34,6 +34,9 @@ struct ProcessingOptions {
   double valence_flip_min_angle_deg = 30.0;
   // Final passes of improvement + flips aimed at the worst triangles (see docs/processing.md).
   int cleanup_rounds = 3;
+  // The cleanup improvements revisit only vertices whose neighbourhood still moves
+  // (ImproveOptions::worklist); measured in docs/processing.md.
+  bool cleanup_worklist = true;
   bool record_stages = true;  // compute SurfaceStats after every stage
 };
 
