@@ -65,6 +65,7 @@ void run(const HierarchyArgs& args, const CliContext& ctx) {
 
   SurfacePipelineOptions surface_options = pipeline;
   surface_options.raw = true;  // each level does its own processing with its own T0
+  surface_options.measure = false;
   const auto surface = surface_from_atoms(atoms, surface_options, reporter);
 
   HierarchyOptions options;

@@ -51,6 +51,7 @@ void run(const SurfaceArgs& args, const CliContext& ctx) {
 
   SurfacePipelineOptions pipeline = args.options.pipeline;
   pipeline.keep_volume = !args.write_volume.empty() && !volume_input;
+  pipeline.measure = !args.stats.empty();  // nobody sees the per-stage stats otherwise
   SurfacePipelineResult result = volume_input ? surface_from_grid(volume, pipeline, reporter)
                                               : surface_from_atoms(atoms, pipeline, reporter);
   if (!args.write_volume.empty()) {

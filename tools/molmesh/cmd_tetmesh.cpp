@@ -71,7 +71,9 @@ void run(const TetmeshArgs& args, const CliContext& ctx) {
   } else {
     atoms = read_atoms(args.input, args.surface.atoms, reporter);
     timings.emplace_back("read", seconds_since(start));
-    SurfacePipelineResult result = surface_from_atoms(atoms, args.surface.pipeline, reporter);
+    SurfacePipelineOptions pipeline = args.surface.pipeline;
+    pipeline.measure = false;  // the tetmesh --stats report has no per-stage surface stats
+    SurfacePipelineResult result = surface_from_atoms(atoms, pipeline, reporter);
     for (const StageRecord& stage : result.stages) timings.emplace_back(stage.name, stage.seconds);
     surface = std::move(result.surface);
     input["kind"] = "atoms";

@@ -1,8 +1,14 @@
 #include "molmesh/hierarchy/build_hierarchy.hpp"
 
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <exception>
 #include <string>
+#include <thread>
+#include <vector>
 
 #include "molmesh/core/error.hpp"
 #include "molmesh/core/timing.hpp"
@@ -44,14 +50,15 @@ Hierarchy build_hierarchy(const SurfaceMesh& surface, const Atoms& atoms,
   Hierarchy hierarchy;
   HierarchyReport local;
   TetMeshOptions tet_options = options.tetmesh;
-  for (int level = 0; level < count; ++level) {
-    const auto L = static_cast<std::size_t>(level);
-    HierarchyLevelReport level_report;
-    const std::string name = "level " + std::to_string(level);
-    HierarchyLevel out;
-    out.t0 = options.t0[L];
+  hierarchy.levels.resize(static_cast<std::size_t>(count));
+  local.levels.resize(static_cast<std::size_t>(count));
 
-    auto tick = std::chrono::steady_clock::now();
+  // Surface of one level: level L is processed from level L-1's surface.
+  auto process_level = [&](int level) {
+    const auto L = static_cast<std::size_t>(level);
+    HierarchyLevel& out = hierarchy.levels[L];
+    const auto tick = std::chrono::steady_clock::now();
+    out.t0 = options.t0[L];
     ProcessingOptions processing = options.processing;
     processing.t0 = {options.t0[L]};
     processing.record_stages = false;
@@ -68,24 +75,63 @@ Hierarchy build_hierarchy(const SurfaceMesh& surface, const Atoms& atoms,
       out.surface = std::move(processed.mesh);
       if (level > 0) out.surface_provenance = std::move(processed.provenance);
     } catch (const Error& e) {
-      throw Error("hierarchy " + name + " (T0 = " + std::to_string(options.t0[L]) +
-                  "): surface processing failed: " + e.what());
+      throw Error("hierarchy level " + std::to_string(level) + " (T0 = " +
+                  std::to_string(options.t0[L]) + "): surface processing failed: " + e.what());
     }
     mark_surface(out.surface, tet_options.active_site);
-    level_report.surface_seconds = seconds_since(tick);
+    local.levels[L].surface_seconds = seconds_since(tick);
     reporter.progress("hierarchy", (2.0 * level + 1.0) * share);
-
-    tick = std::chrono::steady_clock::now();
+  };
+  // Volume of one level. Runs on its own thread: warnings are collected and passed on by
+  // the caller, so the reporter is only ever called from the calling thread.
+  auto mesh_level = [&](int level, std::vector<std::string>& warnings) {
+    const auto L = static_cast<std::size_t>(level);
+    const auto tick = std::chrono::steady_clock::now();
     Reporter tet_sub;
-    tet_sub.on_warning = reporter.on_warning;
+    tet_sub.on_warning = [&warnings](std::string_view w) { warnings.emplace_back(w); };
     try {
       TetMeshOptions level_options = tet_options;
       level_options.size_factor = tet_options.size_factor * std::pow(options.size_growth, level);
-      out.volume =
-          tetrahedralize(out.surface, atoms, level_options, tet_sub, &level_report.tetmesh);
+      hierarchy.levels[L].volume = tetrahedralize(hierarchy.levels[L].surface, atoms, level_options,
+                                                  tet_sub, &local.levels[L].tetmesh);
     } catch (const Error& e) {
-      throw Error("hierarchy " + name + ": volume meshing failed: " + e.what());
+      throw Error("hierarchy level " + std::to_string(level) +
+                  ": volume meshing failed: " + e.what());
     }
+    local.levels[L].volume_seconds = seconds_since(tick);
+  };
+
+  // TetGen is single-threaded, and level L+1's surface needs only level L's surface, so
+  // TetGen meshes level L while level L+1's surface is processed on the other core. Each
+  // computation is deterministic and reads only finished inputs, so the hierarchy is the
+  // same as a sequential run's, whatever the thread count.
+  process_level(0);
+  for (int level = 0; level < count; ++level) {
+    const auto L = static_cast<std::size_t>(level);
+    std::vector<std::string> warnings;
+    std::exception_ptr volume_error;
+    std::thread volume_thread([&] {
+      try {
+        mesh_level(level, warnings);
+      } catch (...) {
+        volume_error = std::current_exception();
+      }
+    });
+    std::exception_ptr surface_error;
+    if (level + 1 < count) {
+      try {
+        process_level(level + 1);
+      } catch (...) {
+        surface_error = std::current_exception();
+      }
+    }
+    volume_thread.join();
+    for (const std::string& w : warnings) reporter.warn(w);
+    if (volume_error) std::rethrow_exception(volume_error);  // the earlier level's failure first
+    if (surface_error) std::rethrow_exception(surface_error);
+
+    HierarchyLevel& out = hierarchy.levels[L];
+    HierarchyLevelReport& level_report = local.levels[L];
     if (level == 0) {
       // Every level must mesh the same domain: freeze the outer radius level 0 chose.
       local.outer_radius = level_report.tetmesh.outer_radius;
@@ -93,9 +139,8 @@ Hierarchy build_hierarchy(const SurfaceMesh& surface, const Atoms& atoms,
         tet_options.outer_radius = local.outer_radius;
       }
     }
-    level_report.volume_seconds = seconds_since(tick);
 
-    tick = std::chrono::steady_clock::now();
+    const auto tick = std::chrono::steady_clock::now();
     level_report.bandwidth_before = vertex_bandwidth(out.volume);
     if (options.renumber) {
       out.volume_permutation = reverse_cuthill_mckee(out.volume);
@@ -104,26 +149,24 @@ Hierarchy build_hierarchy(const SurfaceMesh& surface, const Atoms& atoms,
     level_report.bandwidth_after = vertex_bandwidth(out.volume);
     level_report.renumber_seconds = seconds_since(tick);
     reporter.progress("hierarchy", (2.0 * level + 2.0) * share);
-
-    hierarchy.levels.push_back(std::move(out));
-    local.levels.push_back(level_report);
   }
 
-  for (int fine = 0; fine + 1 < count; ++fine) {
+  // Transfers between different level pairs are independent: computed in parallel, stored
+  // in level order.
+  hierarchy.transfers.resize(static_cast<std::size_t>(std::max(0, count - 1)));
+  tbb::parallel_for(0, count - 1, [&](int fine) {
     const auto tick = std::chrono::steady_clock::now();
     const auto& f = hierarchy.levels[static_cast<std::size_t>(fine)];
     const auto& c = hierarchy.levels[static_cast<std::size_t>(fine) + 1];
     auto& level_report = local.levels[static_cast<std::size_t>(fine) + 1];
-    LevelTransfer transfer;
+    LevelTransfer& transfer = hierarchy.transfers[static_cast<std::size_t>(fine)];
     transfer.coarse_level = fine + 1;
     transfer.fine_level = fine;
     transfer.volume = volume_prolongation(c.volume, f.volume, &level_report.volume_transfer);
     transfer.surface = surface_prolongation(c.surface, f.surface, c.surface_provenance,
                                             &level_report.surface_transfer);
-    hierarchy.transfers.push_back(std::move(transfer));
     level_report.transfer_seconds = seconds_since(tick);
-    reporter.progress("hierarchy", (2.0 * count + (fine + 1.0) / count) * share);
-  }
+  });
   reporter.progress("hierarchy", 1.0);
   local.seconds = seconds_since(start);
   if (report) *report = local;

@@ -10,6 +10,7 @@
 
 #include "molmesh/core/atomic_file.hpp"
 #include "molmesh/core/error.hpp"
+#include "molmesh/io/text_output.hpp"
 #include "molmesh/tetmesh/markers.hpp"
 
 namespace molmesh {
@@ -42,12 +43,6 @@ std::string face_name(int marker) {
   }
 }
 
-std::string real(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.12g", v);
-  return buf;
-}
-
 // Gmsh physical tags must be positive; unmarked cells and faces go to tag 0 → 100 + 0.
 int physical_tag(int marker) { return marker > 0 ? marker : 100 - marker; }
 
@@ -65,40 +60,67 @@ void write_gmsh(const std::filesystem::path& path, const TetMesh& mesh, GmshVers
     faces_by_tag[physical_tag(mesh.boundary_face_markers[f])].push_back(f);
   for (std::size_t t = 0; t < mesh.tetrahedra.size(); ++t) tets_by_tag[region_of(t)].push_back(t);
 
-  write_file_atomically(path, [&](std::ostream& out) {
-    out << "$MeshFormat\n"
-        << (version == GmshVersion::v2_2 ? "2.2" : "4.1") << " 0 8\n$EndMeshFormat\n";
-    out << "$PhysicalNames\n" << faces_by_tag.size() + tets_by_tag.size() << '\n';
+  write_file_atomically(path, [&](std::ostream& stream) {
+    io_detail::TextOutput out(stream);
+    auto point = [&](const Vec3& p) {
+      out.general(p.x(), 12).ch(' ').general(p.y(), 12).ch(' ').general(p.z(), 12);
+    };
+    out.text("$MeshFormat\n")
+        .text(version == GmshVersion::v2_2 ? "2.2" : "4.1")
+        .text(" 0 8\n$EndMeshFormat\n$PhysicalNames\n")
+        .integer(faces_by_tag.size() + tets_by_tag.size())
+        .ch('\n');
     for (const auto& [tag, list] : faces_by_tag)
-      out << "2 " << tag << " \"" << face_name(mesh.boundary_face_markers[list.front()]) << "\"\n";
+      out.text("2 ")
+          .integer(tag)
+          .text(" \"")
+          .text(face_name(mesh.boundary_face_markers[list.front()]))
+          .text("\"\n");
     for (const auto& [tag, list] : tets_by_tag)
-      out << "3 " << tag << " \""
-          << region_name(list.front() < mesh.cell_markers.size() ? mesh.cell_markers[list.front()]
-                                                                 : 0)
-          << "\"\n";
-    out << "$EndPhysicalNames\n";
+      out.text("3 ")
+          .integer(tag)
+          .text(" \"")
+          .text(region_name(
+              list.front() < mesh.cell_markers.size() ? mesh.cell_markers[list.front()] : 0))
+          .text("\"\n");
+    out.text("$EndPhysicalNames\n");
 
     const std::size_t n_elements = mesh.boundary_faces.size() + mesh.tetrahedra.size();
     if (version == GmshVersion::v2_2) {
-      out << "$Nodes\n" << mesh.points.size() << '\n';
-      for (std::size_t i = 0; i < mesh.points.size(); ++i)
-        out << i + 1 << ' ' << real(mesh.points[i].x()) << ' ' << real(mesh.points[i].y()) << ' '
-            << real(mesh.points[i].z()) << '\n';
-      out << "$EndNodes\n$Elements\n" << n_elements << '\n';
+      out.text("$Nodes\n").integer(mesh.points.size()).ch('\n');
+      for (std::size_t i = 0; i < mesh.points.size(); ++i) {
+        out.integer(i + 1).ch(' ');
+        point(mesh.points[i]);
+        out.ch('\n');
+      }
+      out.text("$EndNodes\n$Elements\n").integer(n_elements).ch('\n');
       std::size_t id = 1;
       for (const auto& [tag, list] : faces_by_tag)
         for (std::size_t f : list) {
-          const auto& tri = mesh.boundary_faces[f];
-          out << id++ << ' ' << kGmshTriangle << " 2 " << tag << ' ' << tag << ' ' << tri[0] + 1
-              << ' ' << tri[1] + 1 << ' ' << tri[2] + 1 << '\n';
+          out.integer(id++)
+              .ch(' ')
+              .integer(kGmshTriangle)
+              .text(" 2 ")
+              .integer(tag)
+              .ch(' ')
+              .integer(tag);
+          for (int v : mesh.boundary_faces[f]) out.ch(' ').integer(v + 1);
+          out.ch('\n');
         }
       for (const auto& [tag, list] : tets_by_tag)
         for (std::size_t t : list) {
-          const auto& tet = mesh.tetrahedra[t];
-          out << id++ << ' ' << kGmshTetra << " 2 " << tag << ' ' << tag << ' ' << tet[0] + 1 << ' '
-              << tet[1] + 1 << ' ' << tet[2] + 1 << ' ' << tet[3] + 1 << '\n';
+          out.integer(id++)
+              .ch(' ')
+              .integer(kGmshTetra)
+              .text(" 2 ")
+              .integer(tag)
+              .ch(' ')
+              .integer(tag);
+          for (int v : mesh.tetrahedra[t]) out.ch(' ').integer(v + 1);
+          out.ch('\n');
         }
-      out << "$EndElements\n";
+      out.text("$EndElements\n");
+      out.finish();
       return;
     }
 
@@ -111,57 +133,78 @@ void write_gmsh(const std::filesystem::path& path, const TetMesh& mesh, GmshVers
         lo = lo.cwiseMin(mesh.points[v]);
         hi = hi.cwiseMax(mesh.points[v]);
       });
-      return real(lo.x()) + ' ' + real(lo.y()) + ' ' + real(lo.z()) + ' ' + real(hi.x()) + ' ' +
-             real(hi.y()) + ' ' + real(hi.z());
+      point(lo);
+      out.ch(' ');
+      point(hi);
     };
-    out << "$Entities\n0 0 " << faces_by_tag.size() << ' ' << tets_by_tag.size() << '\n';
-    for (const auto& [tag, list] : faces_by_tag)
-      out << tag << ' ' << bbox([&](auto&& visit) {
+    out.text("$Entities\n0 0 ")
+        .integer(faces_by_tag.size())
+        .ch(' ')
+        .integer(tets_by_tag.size())
+        .ch('\n');
+    for (const auto& [tag, list] : faces_by_tag) {
+      out.integer(tag).ch(' ');
+      bbox([&](auto&& visit) {
         for (std::size_t f : list)
           for (int v : mesh.boundary_faces[f]) visit(v);
-      }) << " 1 "
-          << tag << " 0\n";
+      });
+      out.text(" 1 ").integer(tag).text(" 0\n");
+    }
     for (const auto& [tag, list] : tets_by_tag) {
-      out << tag << ' ' << bbox([&](auto&& visit) {
+      out.integer(tag).ch(' ');
+      bbox([&](auto&& visit) {
         for (std::size_t t : list)
           for (int v : mesh.tetrahedra[t]) visit(v);
-      }) << " 1 "
-          << tag << ' ' << faces_by_tag.size();
-      for (const auto& face_entry : faces_by_tag) out << ' ' << face_entry.first;
-      out << '\n';
+      });
+      out.text(" 1 ").integer(tag).ch(' ').integer(faces_by_tag.size());
+      for (const auto& face_entry : faces_by_tag) out.ch(' ').integer(face_entry.first);
+      out.ch('\n');
     }
-    out << "$EndEntities\n";
+    out.text("$EndEntities\n");
     const int node_dim = tets_by_tag.empty() ? 2 : 3;
     const int node_entity = tets_by_tag.empty()
                                 ? (faces_by_tag.empty() ? 1 : faces_by_tag.begin()->first)
                                 : tets_by_tag.begin()->first;
     const std::size_t n = mesh.points.size();
-    out << "$Nodes\n1 " << n << " 1 " << n << '\n';
-    out << node_dim << ' ' << node_entity << " 0 " << n << '\n';
-    for (std::size_t i = 0; i < n; ++i) out << i + 1 << '\n';
-    for (const auto& p : mesh.points)
-      out << real(p.x()) << ' ' << real(p.y()) << ' ' << real(p.z()) << '\n';
-    out << "$EndNodes\n";
-    out << "$Elements\n"
-        << faces_by_tag.size() + tets_by_tag.size() << ' ' << n_elements << " 1 " << n_elements
-        << '\n';
+    out.text("$Nodes\n1 ").integer(n).text(" 1 ").integer(n).ch('\n');
+    out.integer(node_dim).ch(' ').integer(node_entity).text(" 0 ").integer(n).ch('\n');
+    for (std::size_t i = 0; i < n; ++i) out.integer(i + 1).ch('\n');
+    for (const auto& p : mesh.points) {
+      point(p);
+      out.ch('\n');
+    }
+    out.text("$EndNodes\n$Elements\n")
+        .integer(faces_by_tag.size() + tets_by_tag.size())
+        .ch(' ')
+        .integer(n_elements)
+        .text(" 1 ")
+        .integer(n_elements)
+        .ch('\n');
     std::size_t id = 1;
     for (const auto& [tag, list] : faces_by_tag) {
-      out << "2 " << tag << ' ' << kGmshTriangle << ' ' << list.size() << '\n';
+      out.text("2 ")
+          .integer(tag)
+          .ch(' ')
+          .integer(kGmshTriangle)
+          .ch(' ')
+          .integer(list.size())
+          .ch('\n');
       for (std::size_t f : list) {
-        const auto& tri = mesh.boundary_faces[f];
-        out << id++ << ' ' << tri[0] + 1 << ' ' << tri[1] + 1 << ' ' << tri[2] + 1 << '\n';
+        out.integer(id++);
+        for (int v : mesh.boundary_faces[f]) out.ch(' ').integer(v + 1);
+        out.ch('\n');
       }
     }
     for (const auto& [tag, list] : tets_by_tag) {
-      out << "3 " << tag << ' ' << kGmshTetra << ' ' << list.size() << '\n';
+      out.text("3 ").integer(tag).ch(' ').integer(kGmshTetra).ch(' ').integer(list.size()).ch('\n');
       for (std::size_t t : list) {
-        const auto& tet = mesh.tetrahedra[t];
-        out << id++ << ' ' << tet[0] + 1 << ' ' << tet[1] + 1 << ' ' << tet[2] + 1 << ' '
-            << tet[3] + 1 << '\n';
+        out.integer(id++);
+        for (int v : mesh.tetrahedra[t]) out.ch(' ').integer(v + 1);
+        out.ch('\n');
       }
     }
-    out << "$EndElements\n";
+    out.text("$EndElements\n");
+    out.finish();
   });
 }
 

@@ -18,6 +18,7 @@
 #include "molmesh/geometry/predicates.hpp"
 #include "molmesh/geometry/tetrahedron.hpp"
 #include "molmesh/io/text_input.hpp"
+#include "molmesh/io/text_output.hpp"
 
 namespace molmesh {
 namespace {
@@ -63,12 +64,6 @@ int marker_of_type(int type, const McsfFaceTypes& types) {
 // Face types the reader did not recognise (marker_of_type: type + 100) outrank molmesh's own,
 // so a user's boundary type is never hidden behind ours.
 int marker_priority(int m) { return m >= 100 ? 4 : markers::vertex_marker_rank(m); }
-
-void write_number(std::ostream& out, double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, " %.10e", v);
-  out << buf;
-}
 
 // A tokenizer over the whole file that tracks line numbers and skips % comments.
 class Lexer {
@@ -169,63 +164,94 @@ void write_mcsf(const std::filesystem::path& path, const TetMesh& mesh,
   if (mesh.boundary_face_markers.size() != mesh.boundary_faces.size())
     throw Error("write_mcsf: boundary face markers do not match the faces");
 
-  // Which tet faces are shared (interior, type 0) and which marker the others carry.
-  std::unordered_map<FaceKey, int, FaceKeyHash> uses;
-  uses.reserve(n_tets * 3);
-  for (const auto& t : mesh.tetrahedra)
-    for (const auto& f : kTetFaces) ++uses[sorted_key(t[f[0]], t[f[1]], t[f[2]])];
+  // Which tet faces are shared (interior, type 0) and which marker the others carry. The
+  // faces of all tets are sorted by their vertex triple, so a face is on the boundary
+  // exactly when its key differs from both sorted neighbours (cheaper than a hash map of
+  // four faces per tet, and linear in memory).
+  struct TetFace {
+    FaceKey key;
+    std::uint32_t slot;  // 4 * tet + corner opposite the face
+  };
+  std::vector<TetFace> faces(n_tets * 4);
+  for (std::size_t t = 0; t < n_tets; ++t) {
+    const auto& tet = mesh.tetrahedra[t];
+    for (int k = 0; k < 4; ++k)
+      faces[4 * t + k] = {sorted_key(tet[kTetFaces[k][0]], tet[kTetFaces[k][1]], tet[kTetFaces[k][2]]),
+                          static_cast<std::uint32_t>(4 * t + k)};
+  }
+  std::sort(faces.begin(), faces.end(),
+            [](const TetFace& a, const TetFace& b) { return a.key < b.key; });
   std::unordered_map<FaceKey, int, FaceKeyHash> face_marker;
   face_marker.reserve(mesh.boundary_faces.size() * 2);
   for (std::size_t i = 0; i < mesh.boundary_faces.size(); ++i) {
     const auto& f = mesh.boundary_faces[i];
     face_marker[sorted_key(f[0], f[1], f[2])] = mesh.boundary_face_markers[i];
   }
+  std::vector<int> face_type(n_tets * 4, 0);
+  for (std::size_t i = 0; i < faces.size(); ++i) {
+    const bool shared = (i > 0 && faces[i - 1].key == faces[i].key) ||
+                        (i + 1 < faces.size() && faces[i + 1].key == faces[i].key);
+    if (shared) continue;
+    const auto it = face_marker.find(faces[i].key);
+    face_type[faces[i].slot] =
+        type_of_marker(it == face_marker.end() ? markers::kNoMarker : it->second, types);
+  }
+  faces = {};
 
-  write_file_atomically(path, [&](std::ostream& out) {
-    out << "%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%\n"
+  write_file_atomically(path, [&](std::ostream& stream) {
+    io_detail::TextOutput out(stream);
+    out.text(
+           "%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%\n"
            "% Written by molmesh. Material = region (1 molecule, 2 solvent). Face types:\n"
-           "% 0 interior, "
-        << types.molecular_surface << " molecular surface, " << types.outer_sphere
-        << " outer sphere, " << types.active_site << " active site (odd Dirichlet, even Neumann)\n"
-        << "%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%\n\n"
-        << "mcsf_begin=1;\n\n"
-        << "      dim=3;         % intrinsic manifold dimension\n"
-        << "    dimii=3;         % imbedding manifold dimension\n"
-        << " vertices=" << mesh.points.size() << ";         % number of vertices\n"
-        << "simplices=" << n_tets << ";         % number of simplices\n\n"
-        << "vert=[\n"
-        << "%-------- ---- ----------------- ----------------- -----------------\n"
-        << "% Vert-ID Chrt X-Coordinate      Y-Coordinate      Z-Coordinate\n"
-        << "%-------- ---- ----------------- ----------------- -----------------\n";
+           "% 0 interior, ")
+        .integer(types.molecular_surface)
+        .text(" molecular surface, ")
+        .integer(types.outer_sphere)
+        .text(" outer sphere, ")
+        .integer(types.active_site)
+        .text(
+            " active site (odd Dirichlet, even Neumann)\n"
+            "%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%%\n\n"
+            "mcsf_begin=1;\n\n"
+            "      dim=3;         % intrinsic manifold dimension\n"
+            "    dimii=3;         % imbedding manifold dimension\n"
+            " vertices=")
+        .integer(mesh.points.size())
+        .text(";         % number of vertices\nsimplices=")
+        .integer(n_tets)
+        .text(
+            ";         % number of simplices\n\n"
+            "vert=[\n"
+            "%-------- ---- ----------------- ----------------- -----------------\n"
+            "% Vert-ID Chrt X-Coordinate      Y-Coordinate      Z-Coordinate\n"
+            "%-------- ---- ----------------- ----------------- -----------------\n");
     for (std::size_t i = 0; i < mesh.points.size(); ++i) {
-      out << i << " 0";
-      for (int d = 0; d < 3; ++d) write_number(out, mesh.points[i][d]);
-      out << '\n';
+      out.integer(i).text(" 0");
+      for (int d = 0; d < 3; ++d) out.ch(' ').scientific(mesh.points[i][d], 10);
+      out.ch('\n');
     }
-    out << "];\n\nsimp=[\n"
-        << "%-------- ---- ---- ------------------- ---------------------------------------\n"
-        << "% Simp-ID Grp  Mat  Face-Types          Vertex-Numbers\n"
-        << "%-------- ---- ---- ------------------- ---------------------------------------\n";
+    out.text(
+        "];\n\nsimp=[\n"
+        "%-------- ---- ---- ------------------- ---------------------------------------\n"
+        "% Simp-ID Grp  Mat  Face-Types          Vertex-Numbers\n"
+        "%-------- ---- ---- ------------------- ---------------------------------------\n");
     for (std::size_t t = 0; t < n_tets; ++t) {
       Tetrahedron tet = mesh.tetrahedra[t];
+      // Face types follow the corners: swapping corners 2 and 3 swaps faces 2 and 3.
+      std::array<int, 4> type{face_type[4 * t], face_type[4 * t + 1], face_type[4 * t + 2],
+                              face_type[4 * t + 3]};
       if (orient3d(mesh.points[tet[0]], mesh.points[tet[1]], mesh.points[tet[2]],
-                   mesh.points[tet[3]]) < 0.0)
+                   mesh.points[tet[3]]) < 0.0) {
         std::swap(tet[2], tet[3]);
-      out << t << " 0 " << (mesh.cell_markers.empty() ? 0 : mesh.cell_markers[t]);
-      for (int k = 0; k < 4; ++k) {
-        const auto key =
-            sorted_key(tet[kTetFaces[k][0]], tet[kTetFaces[k][1]], tet[kTetFaces[k][2]]);
-        int type = 0;
-        if (uses[key] == 1) {
-          const auto it = face_marker.find(key);
-          type = type_of_marker(it == face_marker.end() ? markers::kNoMarker : it->second, types);
-        }
-        out << ' ' << type;
+        std::swap(type[2], type[3]);
       }
-      for (int v : tet) out << ' ' << v;
-      out << '\n';
+      out.integer(t).text(" 0 ").integer(mesh.cell_markers.empty() ? 0 : mesh.cell_markers[t]);
+      for (int k = 0; k < 4; ++k) out.ch(' ').integer(type[k]);
+      for (int v : tet) out.ch(' ').integer(v);
+      out.ch('\n');
     }
-    out << "];\n\nmcsf_end=1;\n\n";
+    out.text("];\n\nmcsf_end=1;\n\n");
+    out.finish();
   });
 }
 

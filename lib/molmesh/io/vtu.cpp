@@ -1,10 +1,10 @@
 #include "molmesh/io/vtu.hpp"
 
-#include <cstdio>
 #include <ostream>
 
 #include "molmesh/core/atomic_file.hpp"
 #include "molmesh/core/error.hpp"
+#include "molmesh/io/text_output.hpp"
 
 namespace molmesh {
 namespace {
@@ -19,12 +19,6 @@ void check_fields(const std::vector<PointField>& fields, std::size_t n_points) {
       throw Error("write_vtu: point field '" + f.name + "' has " + std::to_string(f.values.size()) +
                   " values for " + std::to_string(n_points) + " points");
   }
-}
-
-std::string real(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.9g", v);
-  return buf;
 }
 
 // XML attribute values must not contain quotes or angle brackets.
@@ -51,61 +45,81 @@ std::string escape(const std::string& s) {
   return out;
 }
 
+// Cells in VTK's own layout: flat connectivity, end offsets, one type per cell.
 struct Cells {
-  std::vector<std::vector<int>> connectivity;
+  std::vector<int> connectivity;
+  std::vector<std::size_t> offsets;
   std::vector<int> types;
+
+  template <class Corners>
+  void add(const Corners& corners, int type) {
+    connectivity.insert(connectivity.end(), corners.begin(), corners.end());
+    offsets.push_back(connectivity.size());
+    types.push_back(type);
+  }
 };
 
-void write_grid(std::ostream& out, const std::vector<Vec3>& points, const Cells& cells,
+void write_grid(std::ostream& stream, const std::vector<Vec3>& points, const Cells& cells,
                 const std::vector<std::pair<std::string, std::vector<int>>>& int_cell_data,
                 const std::vector<std::pair<std::string, std::vector<int>>>& int_point_data,
                 const std::vector<PointField>& fields) {
-  out << "<?xml version=\"1.0\"?>\n"
+  io_detail::TextOutput out(stream);
+  auto int_array = [&](const std::string& name, const std::vector<int>& values) {
+    out.text("        <DataArray type=\"Int32\" Name=\"")
+        .text(escape(name))
+        .text("\" format=\"ascii\">\n");
+    for (int v : values) out.integer(v).ch('\n');
+    out.text("        </DataArray>\n");
+  };
+  out.text(
+         "<?xml version=\"1.0\"?>\n"
          "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" "
          "header_type=\"UInt64\">\n"
          "  <UnstructuredGrid>\n"
-      << "    <Piece NumberOfPoints=\"" << points.size() << "\" NumberOfCells=\""
-      << cells.types.size() << "\">\n";
-  out << "      <PointData>\n";
-  for (const auto& [name, values] : int_point_data) {
-    out << "        <DataArray type=\"Int32\" Name=\"" << escape(name) << "\" format=\"ascii\">\n";
-    for (int v : values) out << v << '\n';
-    out << "        </DataArray>\n";
-  }
+         "    <Piece NumberOfPoints=\"")
+      .integer(points.size())
+      .text("\" NumberOfCells=\"")
+      .integer(cells.types.size())
+      .text("\">\n      <PointData>\n");
+  for (const auto& [name, values] : int_point_data) int_array(name, values);
   for (const auto& f : fields) {
-    out << "        <DataArray type=\"Float64\" Name=\"" << escape(f.name)
-        << "\" format=\"ascii\">\n";
-    for (double v : f.values) out << real(v) << '\n';
-    out << "        </DataArray>\n";
+    out.text("        <DataArray type=\"Float64\" Name=\"")
+        .text(escape(f.name))
+        .text("\" format=\"ascii\">\n");
+    for (double v : f.values) out.general(v, 9).ch('\n');
+    out.text("        </DataArray>\n");
   }
-  out << "      </PointData>\n      <CellData>\n";
-  for (const auto& [name, values] : int_cell_data) {
-    out << "        <DataArray type=\"Int32\" Name=\"" << escape(name) << "\" format=\"ascii\">\n";
-    for (int v : values) out << v << '\n';
-    out << "        </DataArray>\n";
-  }
-  out << "      </CellData>\n      <Points>\n"
-         "        <DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n";
+  out.text("      </PointData>\n      <CellData>\n");
+  for (const auto& [name, values] : int_cell_data) int_array(name, values);
+  out.text(
+      "      </CellData>\n      <Points>\n"
+      "        <DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n");
   for (const auto& p : points)
-    out << real(p.x()) << ' ' << real(p.y()) << ' ' << real(p.z()) << '\n';
-  out << "        </DataArray>\n      </Points>\n      <Cells>\n"
-         "        <DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
-  for (const auto& c : cells.connectivity) {
-    for (std::size_t k = 0; k < c.size(); ++k) out << (k ? " " : "") << c[k];
-    out << '\n';
+    out.general(p.x(), 9).ch(' ').general(p.y(), 9).ch(' ').general(p.z(), 9).ch('\n');
+  out.text(
+      "        </DataArray>\n      </Points>\n      <Cells>\n"
+      "        <DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n");
+  std::size_t begin = 0;
+  for (const std::size_t end : cells.offsets) {
+    for (std::size_t k = begin; k < end; ++k) {
+      if (k > begin) out.ch(' ');
+      out.integer(cells.connectivity[k]);
+    }
+    out.ch('\n');
+    begin = end;
   }
-  out << "        </DataArray>\n"
-         "        <DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n";
-  std::size_t offset = 0;
-  for (const auto& c : cells.connectivity) {
-    offset += c.size();
-    out << offset << '\n';
-  }
-  out << "        </DataArray>\n"
-         "        <DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n";
-  for (int t : cells.types) out << t << '\n';
-  out << "        </DataArray>\n      </Cells>\n    </Piece>\n  </UnstructuredGrid>\n"
-         "</VTKFile>\n";
+  out.text(
+      "        </DataArray>\n"
+      "        <DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n");
+  for (const std::size_t end : cells.offsets) out.integer(end).ch('\n');
+  out.text(
+      "        </DataArray>\n"
+      "        <DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n");
+  for (int t : cells.types) out.integer(t).ch('\n');
+  out.text(
+      "        </DataArray>\n      </Cells>\n    </Piece>\n  </UnstructuredGrid>\n"
+      "</VTKFile>\n");
+  out.finish();
 }
 
 }  // namespace
@@ -117,15 +131,13 @@ void write_vtu(const std::filesystem::path& path, const TetMesh& mesh,
   std::vector<int> region, boundary_marker;
   for (std::size_t t = 0; t < mesh.tetrahedra.size(); ++t) {
     const auto& tet = mesh.tetrahedra[t];
-    cells.connectivity.push_back({tet[0], tet[1], tet[2], tet[3]});
-    cells.types.push_back(kVtkTetra);
+    cells.add(tet, kVtkTetra);
     region.push_back(t < mesh.cell_markers.size() ? mesh.cell_markers[t] : 0);
     boundary_marker.push_back(0);
   }
   for (std::size_t f = 0; f < mesh.boundary_faces.size(); ++f) {
     const auto& tri = mesh.boundary_faces[f];
-    cells.connectivity.push_back({tri[0], tri[1], tri[2]});
-    cells.types.push_back(kVtkTriangle);
+    cells.add(tri, kVtkTriangle);
     region.push_back(0);
     boundary_marker.push_back(f < mesh.boundary_face_markers.size() ? mesh.boundary_face_markers[f]
                                                                     : 0);
@@ -145,8 +157,7 @@ void write_vtu(const std::filesystem::path& path, const SurfaceMesh& mesh,
   check_fields(point_fields, mesh.points.size());
   Cells cells;
   for (const auto& tri : mesh.triangles) {
-    cells.connectivity.push_back({tri[0], tri[1], tri[2]});
-    cells.types.push_back(kVtkTriangle);
+    cells.add(tri, kVtkTriangle);
   }
   std::vector<std::pair<std::string, std::vector<int>>> cell_data, point_data;
   if (mesh.face_markers.size() == mesh.triangles.size())

@@ -30,7 +30,11 @@ void extract_and_process(const Grid& grid, double level, const SurfacePipelineOp
   if (raw.triangles.empty())
     throw Error("the isosurface at isovalue " + std::to_string(level) +
                 " is empty; lower the isovalue or check the input");
-  result.stages.push_back({"marching cubes", mc_seconds, compute_surface_stats(raw)});
+  const auto stats_of = [&](const SurfaceMesh& mesh) -> std::optional<SurfaceStats> {
+    if (!options.measure) return std::nullopt;
+    return compute_surface_stats(mesh);
+  };
+  result.stages.push_back({"marching cubes", mc_seconds, stats_of(raw)});
 
   if (options.min_cavity_volume > 0.0) {
     start = Clock::now();
@@ -38,9 +42,8 @@ void extract_and_process(const Grid& grid, double level, const SurfacePipelineOp
     raw = drop_small_cavities(raw, options.min_cavity_volume, &removed);
     if (raw.triangles.empty())
       throw Error("removing cavities left no surface (is the surface inside out?)");
-    result.stages.push_back(
-        {"cavities", seconds_since(start),
-         removed > 0 ? std::optional(compute_surface_stats(raw)) : result.stages.back().stats});
+    result.stages.push_back({"cavities", seconds_since(start),
+                             removed > 0 ? stats_of(raw) : result.stages.back().stats});
   }
 
   result.raw = std::move(raw);
@@ -50,6 +53,7 @@ void extract_and_process(const Grid& grid, double level, const SurfacePipelineOp
   }
   ProcessingOptions processing = options.processing;
   if (options.keep_on_surface && projection && !processing.project) processing.project = projection;
+  processing.record_stages = processing.record_stages && options.measure;
   if (!options.keep_spheres_file.empty()) {
     for (const Sphere& s : read_spheres(options.keep_spheres_file))
       processing.keep_spheres.push_back(s);
@@ -57,9 +61,11 @@ void extract_and_process(const Grid& grid, double level, const SurfacePipelineOp
   ProcessingResult processed = process_surface(result.raw, processing, reporter);
   for (ProcessingStage& stage : processed.stages)
     result.stages.push_back({std::move(stage.name), stage.seconds, stage.stats});
-  start = Clock::now();
-  result.dislocation = measure_dislocation(processed.mesh, result.raw);
-  result.stages.push_back({"dislocation", seconds_since(start), std::nullopt});
+  if (options.measure) {
+    start = Clock::now();
+    result.dislocation = measure_dislocation(processed.mesh, result.raw);
+    result.stages.push_back({"dislocation", seconds_since(start), std::nullopt});
+  }
   result.surface = std::move(processed.mesh);
 }
 

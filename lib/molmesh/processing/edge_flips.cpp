@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <vector>
 
 namespace molmesh {
 namespace {
@@ -33,10 +34,11 @@ bool touches_frozen(const Quad& q, std::span<const std::uint8_t> frozen) {
 }
 
 // Runs sweeps over all edges (each once, from its lower-index halfedge) and flips where
-// `wants` says so; deterministic because slots are visited in index order.
-template <class Wants>
+// `wants` says so, calling flipped(q) after each flip; deterministic because slots are
+// visited in index order.
+template <class Wants, class Flipped>
 std::size_t sweep(HalfedgeMesh& mesh, const FlipOptions& options,
-                  std::span<const std::uint8_t> frozen, Wants wants) {
+                  std::span<const std::uint8_t> frozen, Wants wants, Flipped flipped) {
   std::size_t total = 0;
   for (int pass = 0; pass < options.max_passes; ++pass) {
     std::size_t flips = 0;
@@ -50,6 +52,7 @@ std::size_t sweep(HalfedgeMesh& mesh, const FlipOptions& options,
         if (!wants(q)) continue;
         if (!flip_is_geometrically_safe(mesh, h, options.max_dihedral_deg)) continue;
         mesh.flip_edge(h);
+        flipped(q);
         ++flips;
       }
     }
@@ -104,10 +107,13 @@ bool flip_is_geometrically_safe(const HalfedgeMesh& mesh, int h, double max_dihe
 std::size_t flip_edges_for_angles(HalfedgeMesh& mesh, const FlipOptions& options,
                                   std::span<const std::uint8_t> frozen) {
   const double gain = options.min_gain_deg * std::numbers::pi / 180.0;
-  return sweep(mesh, options, frozen, [&](const Quad& q) {
-    const auto [before, after] = pair_min_angles(mesh, q);
-    return after > before + gain;
-  });
+  return sweep(
+      mesh, options, frozen,
+      [&](const Quad& q) {
+        const auto [before, after] = pair_min_angles(mesh, q);
+        return after > before + gain;
+      },
+      [](const Quad&) {});
 }
 
 std::size_t flip_edges_for_angles(SurfaceMesh& mesh, const FlipOptions& options) {
@@ -127,16 +133,29 @@ std::size_t flip_edges_for_angles(SurfaceMesh& mesh, const FlipOptions& options)
 std::size_t flip_edges_for_valence(HalfedgeMesh& mesh, const FlipOptions& options,
                                    double min_angle_deg, std::span<const std::uint8_t> frozen) {
   const double floor_angle = min_angle_deg * std::numbers::pi / 180.0;
-  return sweep(mesh, options, frozen, [&](const Quad& q) {
-    const int va = mesh.valence(q.a), vb = mesh.valence(q.b);
-    const int vc = mesh.valence(q.c), vd = mesh.valence(q.d);
-    auto sq = [](int x) { return (x - 6) * (x - 6); };
-    const int before = sq(va) + sq(vb) + sq(vc) + sq(vd);
-    const int after = sq(va - 1) + sq(vb - 1) + sq(vc + 1) + sq(vd + 1);
-    if (after >= before) return false;
-    const auto [angle_before, angle_after] = pair_min_angles(mesh, q);
-    return angle_after >= std::min(floor_angle, angle_before);
-  });
+  // Valences are kept up to date across flips instead of walking four stars per edge
+  // (a flip of a-b into c-d takes one edge from a and b and gives one to c and d).
+  std::vector<int> valence(static_cast<std::size_t>(mesh.vertex_capacity()), 0);
+  for (int v = 0; v < mesh.vertex_capacity(); ++v)
+    if (mesh.vertex_alive(v)) valence[v] = mesh.valence(v);
+  return sweep(
+      mesh, options, frozen,
+      [&](const Quad& q) {
+        const int va = valence[q.a], vb = valence[q.b];
+        const int vc = valence[q.c], vd = valence[q.d];
+        auto sq = [](int x) { return (x - 6) * (x - 6); };
+        const int before = sq(va) + sq(vb) + sq(vc) + sq(vd);
+        const int after = sq(va - 1) + sq(vb - 1) + sq(vc + 1) + sq(vd + 1);
+        if (after >= before) return false;
+        const auto [angle_before, angle_after] = pair_min_angles(mesh, q);
+        return angle_after >= std::min(floor_angle, angle_before);
+      },
+      [&](const Quad& q) {
+        --valence[q.a];
+        --valence[q.b];
+        ++valence[q.c];
+        ++valence[q.d];
+      });
 }
 
 }  // namespace molmesh

@@ -60,13 +60,18 @@ void improve_angles(SurfaceMesh& mesh, const ImproveOptions& options, const Repo
   limits.max_halvings = options.max_halvings;
   limits.require_quality = options.require_quality;
 
+  const std::size_t n = mesh.points.size();
+  std::vector<std::uint8_t> active(n, 1), moved(n, 0);
   for (int sweep = 0; sweep < options.sweeps; ++sweep) {
     reporter.progress("improve", static_cast<double>(sweep) / options.sweeps);
     // The tensor is taken at the positions of the sweep start ("at the old position").
-    const std::vector<StructureTensor> tensors = structure_tensors(mesh, tensor_rings);
+    const auto only =
+        options.worklist ? std::span<const std::uint8_t>(active) : std::span<const std::uint8_t>();
+    const std::vector<StructureTensor> tensors = structure_tensors(mesh, tensor_rings, only);
     const std::vector<Vec3> before = mesh.points;
     sweep_vertices(mesh.points, rings, colours, [&](std::size_t v) -> std::optional<Vec3> {
       if (has_frozen && options.frozen[v]) return std::nullopt;
+      if (!active[v]) return std::nullopt;
       const Vec3& x = mesh.points[v];
       const auto ring = rings.of(v);
       const Vec3 delta = bisector_target(x, ring, mesh.points) - x;
@@ -81,8 +86,16 @@ void improve_angles(SurfaceMesh& mesh, const ImproveOptions& options, const Repo
       return accept_move(x, x + filtered, ring, mesh.points, limits);
     });
     std::size_t significant = 0;
-    for (std::size_t v = 0; v < mesh.points.size(); ++v) {
-      if ((mesh.points[v] - before[v]).norm() > tiny_move) ++significant;
+    for (std::size_t v = 0; v < n; ++v) {
+      moved[v] = (mesh.points[v] - before[v]).norm() > tiny_move ? 1 : 0;
+      significant += moved[v];
+    }
+    if (options.worklist) {
+      for (std::size_t v = 0; v < n; ++v) {
+        std::uint8_t a = moved[v];
+        for (std::int32_t u : neighbours.of(v)) a |= moved[u];
+        active[v] = a;
+      }
     }
     if (static_cast<double>(significant) <
         options.converged_fraction * static_cast<double>(mesh.points.size())) {

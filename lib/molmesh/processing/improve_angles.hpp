@@ -26,6 +26,10 @@ struct ImproveOptions {
   // Stop early when a sweep moves fewer than this fraction of the vertices by more than
   // 1e-3 of their mean edge length.
   double converged_fraction = 0.002;
+  // Work only where it is needed: after the first sweep, a vertex is revisited only if it
+  // or a neighbour moved by more than 1e-3 of the mean edge in the previous sweep (a settled
+  // neighbourhood proposes about the same move again). Off: every sweep visits every vertex.
+  bool worklist = false;
   // Empty, or one flag per vertex: flagged vertices never move.
   std::vector<std::uint8_t> frozen;
 };

@@ -71,9 +71,10 @@ ProcessingResult process_surface(const SurfaceMesh& input, const ProcessingOptio
   improve.rings = options.rings;
   FlipOptions flips;
 
-  auto improve_and_flip = [&](const std::string& suffix, int sweeps) {
+  auto improve_and_flip = [&](const std::string& suffix, int sweeps, bool worklist = false) {
     ImproveOptions pass = improve;
     pass.sweeps = sweeps;
+    pass.worklist = pass.worklist || worklist;
     timer.run("improve" + suffix, [&] {
       improve_angles(result.mesh, pass, reporter);
       project_vertices(result.mesh, options.project);
@@ -119,7 +120,8 @@ ProcessingResult process_surface(const SurfaceMesh& input, const ProcessingOptio
     improve_and_flip(tag, improve.sweeps);
   }
   for (int round = 0; round < options.cleanup_rounds; ++round) {
-    improve_and_flip(" cleanup " + std::to_string(round + 1), improve.sweeps);
+    improve_and_flip(" cleanup " + std::to_string(round + 1), improve.sweeps,
+                     options.cleanup_worklist);
   }
   return result;
 }

@@ -55,11 +55,13 @@ std::vector<StructureTensor> structure_tensors(const SurfaceMesh& mesh, int ring
   return structure_tensors(mesh, k_rings(mesh, vertex_neighbours(mesh, faces), rings));
 }
 
-std::vector<StructureTensor> structure_tensors(const SurfaceMesh& mesh,
-                                               const VertexAdjacency& ring) {
+std::vector<StructureTensor> structure_tensors(const SurfaceMesh& mesh, const VertexAdjacency& ring,
+                                               std::span<const std::uint8_t> only) {
   const std::vector<Vec3> normals = vertex_normals(mesh);
   std::vector<StructureTensor> tensors(mesh.points.size());
+  const bool all = only.size() != mesh.points.size();
   tbb::parallel_for(std::size_t{0}, mesh.points.size(), [&](std::size_t v) {
+    if (!all && !only[v]) return;
     Eigen::Matrix3d tensor = Eigen::Matrix3d::Zero();
     for (std::int32_t u : ring.of(v)) tensor.noalias() += normals[u] * normals[u].transpose();
     tensors[v] = decompose(tensor);

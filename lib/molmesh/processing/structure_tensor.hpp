@@ -4,6 +4,7 @@
 // (plane: one large eigenvalue; ridge/valley: two; sphere/saddle: three) and steers both
 // vertex relocation (Eq. 5) and coarsening (Eq. 6).
 #include <Eigen/Core>
+#include <cstdint>
 #include <span>
 #include <vector>
 
@@ -34,8 +35,10 @@ StructureTensor structure_tensor_of_normals(std::span<const Vec3> normals);
 std::vector<StructureTensor> structure_tensors(const SurfaceMesh& mesh, int rings = 2);
 
 // Same, over precomputed neighbourhoods (k_rings of vertex_rings.hpp), for callers that
-// recompute tensors on a mesh whose connectivity does not change.
+// recompute tensors on a mesh whose connectivity does not change. With `only` (one flag per
+// vertex), tensors are computed for flagged vertices only; the others are left default.
 std::vector<StructureTensor> structure_tensors(const SurfaceMesh& mesh,
-                                               const VertexAdjacency& neighbourhoods);
+                                               const VertexAdjacency& neighbourhoods,
+                                               std::span<const std::uint8_t> only = {});
 
 }  // namespace molmesh

@@ -7,6 +7,7 @@
 #include <atomic>
 #include <cmath>
 #include <numbers>
+#include <vector>
 
 namespace molmesh {
 
@@ -64,29 +65,52 @@ double star_quality_deg(const Vec3& x, std::span<const std::int32_t> ring,
 
 namespace {
 
-bool star_valid(const Vec3& x, const Vec3& y, std::span<const std::int32_t> ring,
-                const std::vector<Vec3>& points, double cos_turn, double min_area_ratio) {
+// What the move test needs of the star before the move; independent of the trial position,
+// so computed once for all halvings of one move.
+struct StarBefore {
+  Vec3 mean = Vec3::Zero();  // the star's mean normal: new triangles must face its side
+  struct Face {
+    Vec3 normal;    // (a - x) x (b - x)
+    double length;  // its norm
+    bool sliver;    // height below a tenth of the base: its normal is noise
+  };
+  std::vector<Face> faces;
+};
+
+void describe_star(const Vec3& x, std::span<const std::int32_t> ring,
+                   const std::vector<Vec3>& points, StarBefore& star) {
   const std::size_t m = ring.size();
-  // The star's mean normal (before the move): every new triangle must face its side, so the
-  // star stays a graph over its tangent plane and cannot fold.
-  Vec3 mean = Vec3::Zero();
+  star.mean = Vec3::Zero();
   for (std::size_t i = 0; i < m; ++i) {
-    mean += (points[ring[i]] - x).cross(points[ring[(i + 1) % m]] - x);
+    star.mean += (points[ring[i]] - x).cross(points[ring[(i + 1) % m]] - x);
   }
+  star.faces.resize(m);
   for (std::size_t i = 0; i < m; ++i) {
     const Vec3& a = points[ring[i]];
     const Vec3& b = points[ring[(i + 1) % m]];
-    const Vec3 before = (a - x).cross(b - x);
-    const Vec3 after = (a - y).cross(b - y);
-    const double lb = before.norm(), la = after.norm();
-    if (!(la > min_area_ratio * lb) || !(la > 0)) return false;
-    if (after.dot(mean) <= 0) return false;
-    // A sliver's normal is noise (that is what the move is there to repair), so the turn
-    // limit applies only to triangles whose height is at least a tenth of their base.
+    StarBefore::Face& face = star.faces[i];
+    face.normal = (a - x).cross(b - x);
+    face.length = face.normal.norm();
     const double base2 =
         std::max({(a - x).squaredNorm(), (b - x).squaredNorm(), (b - a).squaredNorm()});
-    const bool sliver = lb < 0.1 * base2;
-    if (!sliver && after.dot(before) < cos_turn * la * lb) return false;
+    face.sliver = face.length < 0.1 * base2;
+  }
+}
+
+// No triangle of the star degenerates, turns away from the star's mean normal (folds), or,
+// unless it was a sliver, turns its normal by more than the limit.
+bool star_valid(const StarBefore& star, const Vec3& y, std::span<const std::int32_t> ring,
+                const std::vector<Vec3>& points, double cos_turn, double min_area_ratio) {
+  const std::size_t m = ring.size();
+  for (std::size_t i = 0; i < m; ++i) {
+    const Vec3& a = points[ring[i]];
+    const Vec3& b = points[ring[(i + 1) % m]];
+    const StarBefore::Face& before = star.faces[i];
+    const Vec3 after = (a - y).cross(b - y);
+    const double la = after.norm();
+    if (!(la > min_area_ratio * before.length) || !(la > 0)) return false;
+    if (after.dot(star.mean) <= 0) return false;
+    if (!before.sliver && after.dot(before.normal) < cos_turn * la * before.length) return false;
   }
   return true;
 }
@@ -98,10 +122,12 @@ std::optional<Vec3> accept_move(const Vec3& x, const Vec3& target,
                                 const MoveLimits& limits) {
   const double cos_turn = std::cos(limits.max_normal_turn_deg * std::numbers::pi / 180.0);
   const double q_old = limits.require_quality ? star_quality_cos(x, ring, points) : 1.0;
+  thread_local StarBefore star;
+  describe_star(x, ring, points, star);
   Vec3 step = target - x;
   for (int attempt = 0; attempt <= limits.max_halvings; ++attempt, step *= 0.5) {
     const Vec3 y = x + step;
-    if (!star_valid(x, y, ring, points, cos_turn, limits.min_area_ratio)) continue;
+    if (!star_valid(star, y, ring, points, cos_turn, limits.min_area_ratio)) continue;
     if (limits.require_quality && star_quality_cos(y, ring, points) > q_old) continue;
     return y;
   }
