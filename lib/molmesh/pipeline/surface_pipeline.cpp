@@ -1,6 +1,7 @@
 #include "molmesh/pipeline/surface_pipeline.hpp"
 
 #include <chrono>
+#include <cmath>
 #include <string>
 #include <utility>
 
@@ -15,9 +16,28 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-// Marching cubes, cavity removal, then processing (unless raw).
+// The centre of the local frame atoms are blurred and meshed in: their mean, rounded to a
+// multiple of the grid spacing so that moving a molecule by whole cells moves nothing but
+// this centre (the results are then the same wherever the molecule sits, issue 18).
+Vec3 frame_centre(const Atoms& atoms, double spacing) {
+  Vec3 sum = Vec3::Zero();
+  std::size_t n = 0;
+  for (const auto& a : atoms) {
+    if (!a.center.allFinite()) return Vec3::Zero();  // the blur refuses it with a message
+    sum += a.center;
+    ++n;
+  }
+  if (n == 0 || !(spacing > 0.0) || !std::isfinite(spacing)) return Vec3::Zero();
+  const Vec3 mean = sum / static_cast<double>(n);
+  return Vec3(std::round(mean.x() / spacing) * spacing, std::round(mean.y() / spacing) * spacing,
+              std::round(mean.z() / spacing) * spacing);
+}
+
+// Marching cubes, cavity removal, then processing (unless raw). `centre` is the local
+// frame's origin in input coordinates (keep spheres are given in input coordinates).
 void extract_and_process(const Grid& grid, const SurfacePipelineOptions& options,
-                         const Reporter& reporter, SurfacePipelineResult& result) {
+                         const Reporter& reporter, SurfacePipelineResult& result,
+                         const Vec3& centre = Vec3::Zero()) {
   auto start = Clock::now();
   SurfaceMesh raw = marching_cubes(grid, options.isovalue, reporter);
   const double mc_seconds = seconds_since(start);
@@ -44,8 +64,10 @@ void extract_and_process(const Grid& grid, const SurfacePipelineOptions& options
   }
   ProcessingOptions processing = options.processing;
   if (!options.keep_spheres_file.empty()) {
-    for (const Sphere& s : read_spheres(options.keep_spheres_file))
+    for (Sphere s : read_spheres(options.keep_spheres_file)) {
+      s.center -= centre;
       processing.keep_spheres.push_back(s);
+    }
   }
   ProcessingResult processed = process_surface(result.raw, processing, reporter);
   for (ProcessingStage& stage : processed.stages)
@@ -63,14 +85,26 @@ SurfacePipelineResult surface_from_atoms(const Atoms& atoms, const SurfacePipeli
   SurfacePipelineResult result;
   BlurOptions blur = options.blur;
   blur.isovalue = options.isovalue;
+  // Local frame: far from the origin (1e6 Å and more) coordinates lose the digits the
+  // processing needs; shifted to the molecule's centre they keep them.
+  const Vec3 centre = frame_centre(atoms, blur.spacing);
+  SurfacePipelineOptions local_options = options;
+  for (Sphere& s : local_options.processing.keep_spheres) s.center -= centre;
+  Atoms local_atoms = atoms;
+  for (Atom& a : local_atoms) a.center -= centre;
   const auto start = Clock::now();
   Grid grid = options.blur_method == BlurMethod::kFast
-                  ? fast_blur(atoms, blur, SplatMethod::kTrilinear, reporter)
-                  : blur_atoms(atoms, blur, reporter);
+                  ? fast_blur(local_atoms, blur, SplatMethod::kTrilinear, reporter)
+                  : blur_atoms(local_atoms, blur, reporter);
   result.stages.push_back({"blur", seconds_since(start), std::nullopt});
   result.grid_dims = grid.dims;
-  extract_and_process(grid, options, reporter, result);
-  if (options.keep_volume) result.volume = std::move(grid);
+  extract_and_process(grid, local_options, reporter, result, centre);
+  for (auto* mesh : {&result.raw, &result.surface})
+    for (Vec3& p : mesh->points) p += centre;
+  if (options.keep_volume) {
+    grid.origin += centre;
+    result.volume = std::move(grid);
+  }
   return result;
 }
 
