@@ -121,9 +121,9 @@ TEST(OutputPaths, FullDiskIsExitCode4ForHierarchyAndSolve) {
 
   // solve: the hierarchy fits, its copy with the new fields does not.
   const auto home = scratch("solvehome");
-  ASSERT_EQ(test::run_molmesh("hierarchy " + k1a1p + " --t0 0.2,0.4 -o " + (home / "h.h5").string())
-                .code,
-            0);
+  ASSERT_EQ(
+      test::run_molmesh("hierarchy " + k1a1p + " --t0 0.2,0.4 -o " + (home / "h.h5").string()).code,
+      0);
   const auto size = fs::file_size(home / "h.h5");
   const std::string options = "size=" + std::to_string(size + size / 2 + 65536);
   ASSERT_EQ(::mount("tmpfs", dir.c_str(), "tmpfs", 0, options.c_str()), 0);
@@ -145,8 +145,8 @@ int interrupt_while_writing(const std::string& input, const fs::path& dir, int s
   const std::string out = (dir / "h.h5").string();
   const pid_t child = ::fork();
   if (child == 0) {
-    ::execl(MOLMESH_CLI_PATH, "molmesh", "-q", "hierarchy", input.c_str(), "--t0", "0.1,0.3",
-            "-o", out.c_str(), static_cast<char*>(nullptr));
+    ::execl(MOLMESH_CLI_PATH, "molmesh", "-q", "hierarchy", input.c_str(), "--t0", "0.1,0.3", "-o",
+            out.c_str(), static_cast<char*>(nullptr));
     ::_exit(127);
   }
   const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(300);

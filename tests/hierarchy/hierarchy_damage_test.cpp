@@ -9,12 +9,10 @@
 #include <iterator>
 #include <string>
 
+#include "hierarchy/hierarchy_support.hpp"
 #include "molmesh/core/error.hpp"
-#include "molmesh/hierarchy/renumber.hpp"
-#include "molmesh/hierarchy/transfer.hpp"
 #include "molmesh/io/hierarchy_hdf5.hpp"
 #include "support/cli_exit.hpp"
-#include "support/structured_meshes.hpp"
 
 namespace molmesh {
 namespace {
@@ -22,37 +20,15 @@ namespace {
 namespace fs = std::filesystem;
 
 fs::path scratch(const std::string& name) {
-  const auto dir = fs::temp_directory_path() /
-                   ("molmesh_hierarchy_damage_" + name + std::to_string(::getpid()));
+  const auto dir =
+      fs::temp_directory_path() / ("molmesh_hierarchy_damage_" + name + std::to_string(::getpid()));
   fs::remove_all(dir);
   fs::create_directories(dir);
   return dir;
 }
 
-// Two levels of a cube (the same construction as hierarchy_hdf5_test.cpp).
 Hierarchy small_hierarchy() {
-  Hierarchy h;
-  for (int n : {4, 2}) {
-    HierarchyLevel level;
-    level.t0 = n == 4 ? 0.1 : 0.3;
-    TetMesh volume = testing::structured_cube(n, -2.0, 2.0);
-    level.volume_permutation = reverse_cuthill_mckee(volume);
-    level.volume = permute_vertices(volume, level.volume_permutation);
-    level.surface = testing::structured_cube_surface(n, -2.0, 2.0);
-    h.levels.push_back(std::move(level));
-  }
-  auto& coarse = h.levels[1];
-  const auto& fine = h.levels[0];
-  for (const auto& p : coarse.surface.points) {
-    int match = -1;
-    for (std::size_t f = 0; f < fine.surface.points.size(); ++f)
-      if ((fine.surface.points[f] - p).norm() < 1e-12) match = static_cast<int>(f);
-    coarse.surface_provenance.push_back(match);
-  }
-  LevelTransfer t;
-  t.volume = volume_prolongation(coarse.volume, fine.volume);
-  t.surface = surface_prolongation(coarse.surface, fine.surface, coarse.surface_provenance);
-  h.transfers.push_back(std::move(t));
+  Hierarchy h = testing::cube_hierarchy(4, 2);
   h.parameters = {{"domain", "exterior"}};
   h.input_name = "cube.pqr";
   return h;

@@ -42,13 +42,15 @@ TEST(FarFromOrigin, ProcessedSurfaceAndTetMeshDoNotDependOnPosition) {
   ProcessingOptions processing;
   SurfaceMesh shifted = near_result.raw;
   for (auto& p : shifted.points) p += far;
-  const double area_near = compute_surface_stats(process_surface(near_result.raw, processing).mesh).area;
+  const double area_near =
+      compute_surface_stats(process_surface(near_result.raw, processing).mesh).area;
   const double area_far = compute_surface_stats(process_surface(shifted, processing).mesh).area;
   EXPECT_LT(relative(area_far, area_near), 1e-6) << area_near << " vs " << area_far;
 
   TetMeshOptions tet;
   tet.domain = Domain::interior;
-  const TetStats ta = compute_tet_stats(tetrahedralize(near_result.surface, two_atoms(Vec3::Zero()), tet));
+  const TetStats ta =
+      compute_tet_stats(tetrahedralize(near_result.surface, two_atoms(Vec3::Zero()), tet));
   const TetStats tb = compute_tet_stats(tetrahedralize(far_result.surface, two_atoms(far), tet));
   EXPECT_EQ(ta.tetrahedra, tb.tetrahedra);
   EXPECT_NEAR(ta.min_dihedral_deg, tb.min_dihedral_deg, 1e-3);

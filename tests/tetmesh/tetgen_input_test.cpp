@@ -33,7 +33,8 @@ TetMeshOptions interior() {
 void add_box(SurfaceMesh& s, const Vec3& lo, const Vec3& hi) {
   const int base = static_cast<int>(s.points.size());
   for (int k = 0; k < 8; ++k)
-    s.points.push_back(Vec3(k & 1 ? hi.x() : lo.x(), k & 2 ? hi.y() : lo.y(), k & 4 ? hi.z() : lo.z()));
+    s.points.push_back(
+        Vec3(k & 1 ? hi.x() : lo.x(), k & 2 ? hi.y() : lo.y(), k & 4 ? hi.z() : lo.z()));
   const int quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4},
                            {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
   for (const auto& q : quads) {
@@ -56,8 +57,10 @@ TEST(TetgenInput, NonManifoldEdgeIsRefused) {
   // Weld the shared edge (x = y = 1) of the second box onto the first's vertices.
   for (auto& t : s.triangles)
     for (int& v : t) {
-      if (v == 8) v = 3;       // (1,1,0)
-      else if (v == 12) v = 7; // (1,1,1)
+      if (v == 8)
+        v = 3;  // (1,1,0)
+      else if (v == 12)
+        v = 7;  // (1,1,1)
     }
   EXPECT_NE(error_of(s, interior()).find("manifold"), std::string::npos) << error_of(s, interior());
 }
@@ -123,14 +126,13 @@ TEST(TetgenInput, OptionValuesAreRangeChecked) {
     change(o);
     return o;
   };
-  for (const TetMeshOptions& o :
-       {with([](TetMeshOptions& o) { o.outer_radius = 1e300; }),
-        with([&](TetMeshOptions& o) { o.outer_radius = nan; }),
-        with([&](TetMeshOptions& o) { o.min_dihedral_deg = nan; }),
-        with([&](TetMeshOptions& o) { o.max_radius_edge_ratio = nan; }),
-        with([&](TetMeshOptions& o) { o.sphere_ratio = INFINITY; }),
-        with([&](TetMeshOptions& o) { o.size_factor = nan; }),
-        with([&](TetMeshOptions& o) { o.max_volume = -1.0; })}) {
+  for (const TetMeshOptions& o : {with([](TetMeshOptions& o) { o.outer_radius = 1e300; }),
+                                  with([&](TetMeshOptions& o) { o.outer_radius = nan; }),
+                                  with([&](TetMeshOptions& o) { o.min_dihedral_deg = nan; }),
+                                  with([&](TetMeshOptions& o) { o.max_radius_edge_ratio = nan; }),
+                                  with([&](TetMeshOptions& o) { o.sphere_ratio = INFINITY; }),
+                                  with([&](TetMeshOptions& o) { o.size_factor = nan; }),
+                                  with([&](TetMeshOptions& o) { o.max_volume = -1.0; })}) {
     EXPECT_THROW(o.validate(), Error);
     EXPECT_THROW(tetrahedralize(ion, {}, o), Error);
   }
@@ -152,9 +154,9 @@ TEST(TetgenInput, CliFas2AtBlobbyness2IsNoCrash) {
   const auto dir = std::filesystem::temp_directory_path() /
                    ("molmesh_tetgen_fas2_" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
-  const auto r = test::run_molmesh(std::string("tetmesh ") + MOLMESH_TEST_DATA_DIR +
-                                   "/fas2.pqr --blobbyness -2 --domain full -o " +
-                                   (dir / "f.m").string());
+  const auto r =
+      test::run_molmesh(std::string("tetmesh ") + MOLMESH_TEST_DATA_DIR +
+                        "/fas2.pqr --blobbyness -2 --domain full -o " + (dir / "f.m").string());
   EXPECT_EQ(r.signal, 0) << r.err;
   EXPECT_TRUE(r.code == 0 || r.code == 1) << r.code << " " << r.err;
   if (r.code != 0) {

@@ -19,6 +19,7 @@
 #include "molmesh/io/sha256.hpp"
 #include "molmesh/io/sphere_list.hpp"
 #include "molmesh/pipeline/surface_pipeline.hpp"
+#include "option_checks.hpp"
 
 namespace molmesh::cli {
 namespace {
@@ -48,6 +49,7 @@ struct HierarchyArgs {
   double size_factor = 1.0;
   double size_growth = HierarchyOptions{}.size_growth;
   bool no_renumber = false;
+  double max_memory_bytes = default_memory_limit();
 };
 
 // Shortest text that reads back to the same double (0.2, not 0.20000000000000001).
@@ -73,7 +75,9 @@ void run(const HierarchyArgs& args, const CliContext& ctx) {
   surface_options.blur.blobbyness = args.blobbyness;
   surface_options.isovalue = args.isovalue;
   surface_options.min_cavity_volume = args.min_cavity_volume;
-  surface_options.raw = true;  // each level does its own processing with its own T0
+  surface_options.raw = true;
+  surface_options.blur.max_memory_bytes =
+      args.max_memory_bytes;  // each level does its own processing with its own T0
   const auto surface = surface_from_atoms(atoms, surface_options, reporter);
 
   HierarchyOptions options;
@@ -96,6 +100,7 @@ void run(const HierarchyArgs& args, const CliContext& ctx) {
   options.tetmesh.min_dihedral_deg = args.min_dihedral;
   if (args.max_volume > 0) options.tetmesh.max_volume = args.max_volume;
   options.tetmesh.size_factor = args.size_factor;
+  options.tetmesh.max_memory_bytes = args.max_memory_bytes;
   options.size_growth = args.size_growth;
   options.renumber = !args.no_renumber;
 
@@ -158,11 +163,13 @@ const CommandRegistration registration{
              "-o,--output", args->output,
              "Output HDF5 file (OUT.h5); XDMF sidecars OUT.xdmf and OUT_L<L>_{volume,surface}.xdmf "
              "are written beside it")
-          ->required();
+          ->required()
+          ->check(output_extension({".h5"}));
       cmd->add_option(
              "--t0", args->t0,
              "Coarsening thresholds T0 (Eq. 6), one level each, finest first, non-decreasing")
           ->delimiter(',')
+          ->check(finite_in(0, 1e3))
           ->capture_default_str();
       cmd->add_option(
              "--domain", args->domain,
@@ -171,31 +178,35 @@ const CommandRegistration registration{
           ->check(CLI::IsMember({"interior", "exterior", "full"}))
           ->capture_default_str();
       cmd->add_option("--spacing", args->spacing, "Grid spacing of the Gaussian blurring (Å)")
-          ->check(CLI::PositiveNumber)
+          ->check(finite_above(0, kLargestValue))
           ->capture_default_str();
       cmd->add_option("--blobbyness", args->blobbyness, "Global blobbyness B of Eq. 1 (negative)")
+          ->check(finite_in(-1e6, -1e-12))
           ->capture_default_str();
       cmd->add_option("--isovalue", args->isovalue, "Isovalue of the blurred volume")
-          ->check(CLI::PositiveNumber)
+          ->check(finite_above(0, kLargestValue))
           ->capture_default_str();
       cmd->add_option("--min-cavity-volume", args->min_cavity_volume,
                       "Drop interior cavities enclosing less than this volume (Å³; 0 keeps all)")
+          ->check(finite_in(0, kLargestValue))
           ->capture_default_str();
       cmd->add_option("--alpha", args->alpha, "Eq. 6 exponent on the longest incident edge")
+          ->check(finite_in(0, kLargestValue))
           ->capture_default_str();
       cmd->add_option("--beta", args->beta, "Eq. 6 exponent on the eigenvalue ratio")
+          ->check(finite_in(0, kLargestValue))
           ->capture_default_str();
       cmd->add_option("--rings", args->rings, "k-ring of the local structure tensor")
           ->check(CLI::Range(1, 4))
           ->capture_default_str();
       cmd->add_option("--sphere-ratio", args->sphere_ratio,
                       "Outer sphere radius as a multiple of the molecule size (exterior/full)")
-          ->check(CLI::PositiveNumber)
+          ->check(finite_above(0, 1e4))
           ->capture_default_str();
       cmd->add_option(
              "--outer-radius", args->outer_radius,
              "Outer sphere radius in Å (overrides --sphere-ratio); the same on every level")
-          ->check(CLI::PositiveNumber);
+          ->check(finite_above(0, kMaxOuterRadius));
       cmd->add_option("--outer-sphere-subdivisions", args->outer_subdivisions,
                       "Icosphere subdivision level of the outer sphere (10*4^L+2 vertices)")
           ->check(CLI::Range(0, 6))
@@ -207,26 +218,27 @@ const CommandRegistration registration{
           ->check(CLI::ExistingFile);
       cmd->add_option("--max-radius-edge", args->max_radius_edge,
                       "TetGen quality bound: radius-edge ratio of tetrahedra")
-          ->check(CLI::Range(1.0, 100.0))
+          ->check(finite_in(1.0, 100.0))
           ->capture_default_str();
       cmd->add_option("--min-dihedral", args->min_dihedral,
                       "TetGen quality bound: minimum dihedral angle (degrees)")
-          ->check(CLI::Range(0.0, 30.0))
+          ->check(finite_in(0.0, 30.0))
           ->capture_default_str();
       cmd->add_option("--max-volume", args->max_volume, "Upper bound on tetrahedron volume (Å³)")
-          ->check(CLI::PositiveNumber);
+          ->check(finite_above(0, kLargestValue));
       cmd->add_option("--size-factor", args->size_factor,
                       "Size grading (TetGen -m): tetrahedra near the surface and the outer sphere "
                       "aim at their edge length times this factor, graded in between; smaller: "
                       "finer near the surface; 0: no grading")
-          ->check(CLI::NonNegativeNumber)
+          ->check(finite_in(0, 1000))
           ->capture_default_str();
       cmd->add_option("--size-growth", args->size_growth,
                       "Level L grades with --size-factor times this to the power L, so coarse "
                       "levels coarsen the far field too, not only the surface (1: same far field "
                       "on every level)")
-          ->check(CLI::Range(1.0, 10.0))
+          ->check(finite_in(1.0, 10.0))
           ->capture_default_str();
+      add_max_memory_option(*cmd, args->max_memory_bytes);
       cmd->add_flag("--no-renumber", args->no_renumber,
                     "Keep TetGen's vertex numbering (default: reverse Cuthill-McKee, permutation "
                     "stored in /levels/<L>/volume/permutation)");

@@ -18,6 +18,7 @@
 #include "molmesh/processing/mesh_repair.hpp"
 #include "molmesh/processing/process_surface.hpp"
 #include "molmesh/surface/surface_stats.hpp"
+#include "option_checks.hpp"
 
 namespace molmesh::cli {
 namespace {
@@ -196,7 +197,7 @@ const CommandRegistration registration{
       cmd->add_option("--feature-weight", args->processing.improve.feature_weight,
                       "How strongly vertices on features are held in place during improvement "
                       "(0: not at all)")
-          ->check(CLI::NonNegativeNumber)
+          ->check(finite_in(0, kLargestValue))
           ->capture_default_str()
           ->type_name("W");
       cmd->add_option("--smooth-iterations", args->processing.smoothing.normal_iterations,
@@ -215,7 +216,7 @@ const CommandRegistration registration{
       cmd->add_option("--merge-tolerance", args->repair.merge_tolerance,
                       "Vertices closer than this (Å) are merged during repair (0: only exact "
                       "duplicates)")
-          ->check(CLI::NonNegativeNumber)
+          ->check(finite_in(0, kLargestValue))
           ->capture_default_str()
           ->type_name("D");
       cmd->callback([args, &ctx] { run(*args, ctx); });

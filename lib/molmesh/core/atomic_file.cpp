@@ -104,10 +104,10 @@ TargetKind target_kind(const fs::path& path, const fs::path& given) {
   const auto status = fs::status(path, ec);
   if (ec || !fs::exists(status) || fs::is_regular_file(status)) return TargetKind::regular;
   if (fs::is_character_file(status) || fs::is_fifo(status)) return TargetKind::in_place;
-  const char* what = fs::is_directory(status)      ? "a directory"
-                     : fs::is_block_file(status)   ? "a block device"
-                     : fs::is_socket(status)       ? "a socket"
-                                                   : "not a regular file";
+  const char* what = fs::is_directory(status)    ? "a directory"
+                     : fs::is_block_file(status) ? "a block device"
+                     : fs::is_socket(status)     ? "a socket"
+                                                 : "not a regular file";
   throw OutputError("cannot write " + given.string() + ": it is " + what);
 }
 

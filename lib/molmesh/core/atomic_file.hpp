@@ -17,8 +17,7 @@ namespace molmesh {
 // `path`. If write throws or the stream fails, the temporary is removed, `path` is left
 // as it was, and the error propagates (stream failures become OutputError).
 void write_file_atomically(const std::filesystem::path& path,
-                           const std::function<void(std::ostream&)>& write,
-                           bool binary = false);
+                           const std::function<void(std::ostream&)>& write, bool binary = false);
 
 // For writers that need a file name (HDF5): write(tmp_path) creates the file at tmp_path,
 // which is then renamed to `path`; same guarantees as above.

@@ -32,8 +32,9 @@ std::string format_bytes(double bytes) {
 void check_memory(double bytes, double limit, const std::string& what, const std::string& hint) {
   // NaN or inf estimates (absurd inputs) are refused too.
   if (bytes <= limit) return;
-  throw Error(what + " would need " + (std::isfinite(bytes) ? format_bytes(bytes) : "unbounded memory") +
-              ", more than the memory limit of " + format_bytes(limit) + " (--max-memory); " + hint);
+  throw Error(
+      what + " would need " + (std::isfinite(bytes) ? format_bytes(bytes) : "unbounded memory") +
+      ", more than the memory limit of " + format_bytes(limit) + " (--max-memory); " + hint);
 }
 
 }  // namespace molmesh

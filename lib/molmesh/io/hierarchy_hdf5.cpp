@@ -9,15 +9,15 @@
 #include <algorithm>
 #include <cerrno>
 #include <chrono>
-#include <cstdio>
-#include <mutex>
-#include <set>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
+#include <mutex>
 #include <optional>
+#include <set>
 #include <stdexcept>
 #include <utility>
 
@@ -590,15 +590,16 @@ std::vector<char> file_image(hid_t file) {
   const ssize_t size = H5Fget_file_image(file, nullptr, 0);
   if (size <= 0) throw H5Failure("size of the file image");
   std::vector<char> image(static_cast<std::size_t>(size));
-  if (H5Fget_file_image(file, image.data(), image.size()) != size)
-    throw H5Failure("file image");
+  if (H5Fget_file_image(file, image.data(), image.size()) != size) throw H5Failure("file image");
   return image;
 }
 
 void write_image(const std::filesystem::path& path, const std::vector<char>& image) {
   write_file_atomically(
       path,
-      [&](std::ostream& out) { out.write(image.data(), static_cast<std::streamsize>(image.size())); },
+      [&](std::ostream& out) {
+        out.write(image.data(), static_cast<std::streamsize>(image.size()));
+      },
       true);
 }
 
@@ -718,8 +719,7 @@ void probe_hierarchy(const std::filesystem::path& path) {
   }
   ::close(channel[1]);
   // Generous: reading a 100 MB hierarchy takes about a second.
-  const double seconds =
-      60.0 + static_cast<double>(std::filesystem::file_size(path)) / 1e7;
+  const double seconds = 60.0 + static_cast<double>(std::filesystem::file_size(path)) / 1e7;
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
   std::string message;
   bool timed_out = false;

@@ -15,6 +15,7 @@ namespace molmesh {
 // Moves the vertices of crossing triangles of `mesh` halfway back to their positions in
 // `input` (provenance[v] = input vertex of v), then all the way, for a bounded number of
 // rounds. Returns the number of crossing triangle pairs left (0: untangled).
-std::size_t untangle(SurfaceMesh& mesh, const SurfaceMesh& input, const std::vector<int>& provenance);
+std::size_t untangle(SurfaceMesh& mesh, const SurfaceMesh& input,
+                     const std::vector<int>& provenance);
 
 }  // namespace molmesh

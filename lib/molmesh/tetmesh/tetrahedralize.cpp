@@ -29,9 +29,6 @@ void link_tetgen_terminate_override();  // tetgen_terminate.cpp
 }
 namespace {
 
-// Far enough for any molecule's far field (the default is 40 x the molecule size); beyond,
-// TetGen's predicates lose the molecule against the sphere (--outer-radius 1e300 aborted).
-constexpr double kMaxOuterRadius = 1e6;
 // What a tetrahedron costs in TetGen's pools, its output arrays and our TetMesh (measured
 // order of magnitude, generous), for the memory estimate below.
 constexpr double kBytesPerTetrahedron = 400.0;
@@ -141,10 +138,14 @@ void validate_plc(const SurfaceMesh& s) {
     const auto reverse = directed.find(key(b, a));
     const int back = reverse == directed.end() ? 0 : reverse->second;
     const bool bad = count > 1 || back == 0 || back > 1;
-    if (count > 1 && back > 0) ++non_manifold;
-    else if (count > 1) ++misoriented;
-    else if (back == 0) ++open;
-    else if (back > 1) ++non_manifold;
+    if (count > 1 && back > 0)
+      ++non_manifold;
+    else if (count > 1)
+      ++misoriented;
+    else if (back == 0)
+      ++open;
+    else if (back > 1)
+      ++non_manifold;
     if (bad && !have_example) {
       example = (s.points[a] + s.points[b]) / 2.0;
       have_example = true;
@@ -198,10 +199,9 @@ void validate_plc(const SurfaceMesh& s) {
             if (it == cells.end()) continue;
             for (int j : it->second)
               if ((s.points[static_cast<std::size_t>(j)] - p).norm() <= tolerance)
-                throw Error("surface vertices " + std::to_string(j) + " and " +
-                            std::to_string(i) + " coincide (closer than " +
-                            format_number(tolerance) + " Å) at " + format_point(p) +
-                            "; merge them (molmesh improve) before meshing");
+                throw Error("surface vertices " + std::to_string(j) + " and " + std::to_string(i) +
+                            " coincide (closer than " + format_number(tolerance) + " Å) at " +
+                            format_point(p) + "; merge them (molmesh improve) before meshing");
           }
       cells[c].push_back(i);
     }
@@ -277,8 +277,8 @@ void TetMeshOptions::validate() const {
 
 // tetrahedralize() in a frame centred on the molecule (see there).
 static TetMesh tetrahedralize_centred(const SurfaceMesh& surface, const Atoms& atoms,
-                               const TetMeshOptions& options, const Reporter& reporter,
-                               TetMeshReport* report_out) {
+                                      const TetMeshOptions& options, const Reporter& reporter,
+                                      TetMeshReport* report_out) {
   const auto t_start = Clock::now();
   TetMeshReport report;
 
@@ -631,8 +631,8 @@ TetMesh tetrahedralize(const SurfaceMesh& surface, const Atoms& atoms,
   // coordinates near the origin, and the mesh must not depend on where the molecule sits
   // (issue 18: far from the origin results degraded). Shift to the molecule's centre,
   // mesh, shift back.
-  const Vec3 centre = (atoms.empty() ? molecule_extent(surface.points) : molecule_extent(atoms))
-                          .centroid;
+  const Vec3 centre =
+      (atoms.empty() ? molecule_extent(surface.points) : molecule_extent(atoms)).centroid;
   SurfaceMesh local = surface;
   for (auto& p : local.points) p -= centre;
   Atoms local_atoms = atoms;

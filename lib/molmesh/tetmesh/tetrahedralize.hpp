@@ -19,6 +19,11 @@ namespace molmesh {
 
 enum class Domain { interior, exterior, full };
 
+// Largest outer sphere radius (Å): far enough for any molecule's far field (the default is
+// 40 x the molecule size); beyond, TetGen's predicates lose the molecule against the sphere
+// (--outer-radius 1e300 aborted in a TetGen assertion).
+inline constexpr double kMaxOuterRadius = 1e6;
+
 struct TetMeshOptions {
   Domain domain = Domain::full;
   // Outer sphere radius = sphere_ratio × molecule size (max distance of atom centres from
