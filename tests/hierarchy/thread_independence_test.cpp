@@ -19,17 +19,17 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct Run {
+struct Outputs {
   SurfaceMesh surface;
   TetMesh volume;
   Hierarchy hierarchy;
 };
 
-Run run_with(int threads) {
+Outputs run_with(int threads) {
   const tbb::global_control limit(tbb::global_control::max_allowed_parallelism,
                                   static_cast<std::size_t>(threads));
   const Atoms atoms = read_atoms(std::string(MOLMESH_TEST_DATA_DIR) + "/1a1p.pqr");
-  Run r;
+  Outputs r;
   r.surface = surface_from_atoms(atoms, {}).surface;
   r.volume = tetrahedralize(r.surface, atoms, {});
   SurfacePipelineOptions raw;
@@ -46,8 +46,8 @@ std::string bytes_of(const fs::path& p) {
 }
 
 TEST(ThreadIndependence, SurfaceTetmeshAndHierarchyAreIdenticalWithOneAndTwoThreads) {
-  const Run one = run_with(1);
-  const Run two = run_with(2);
+  const Outputs one = run_with(1);
+  const Outputs two = run_with(2);
   EXPECT_EQ(one.surface.points, two.surface.points);
   EXPECT_EQ(one.surface.triangles, two.surface.triangles);
   EXPECT_EQ(one.volume.points, two.volume.points);
