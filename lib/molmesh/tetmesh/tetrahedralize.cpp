@@ -217,14 +217,6 @@ void validate_plc(const SurfaceMesh& s) {
   }
 }
 
-// Volume enclosed by the closed surface (divergence theorem), for size estimates.
-double enclosed_volume(const SurfaceMesh& s) {
-  double v = 0.0;
-  for (const auto& t : s.triangles)
-    v += s.points[t[0]].dot(s.points[t[1]].cross(s.points[t[2]])) / 6.0;
-  return std::abs(v);
-}
-
 // Mean length of the edges at each vertex: the local mesh size the surface already has.
 std::vector<double> mean_edge_lengths(const SurfaceMesh& s) {
   std::vector<double> sum(s.points.size(), 0.0);
@@ -365,7 +357,8 @@ static TetMesh tetrahedralize_centred(const SurfaceMesh& surface, const Atoms& a
     double h_mean = 0.0;
     for (int i = 0; i < n_surface; ++i) h_mean += input_sizes[static_cast<std::size_t>(i)];
     h_mean /= n_surface;
-    const double tetrahedra = enclosed_volume(surface) * 8.49 / (h_mean * h_mean * h_mean);
+    const double tetrahedra = std::abs(enclosed_volume(surface.points, surface.triangles)) * 8.49 /
+                              (h_mean * h_mean * h_mean);
     check_memory(tetrahedra * kBytesPerTetrahedron, options.max_memory_bytes,
                  "the tetrahedral mesh (about " + format_number(tetrahedra) +
                      " tetrahedra at --size-factor " + format_number(options.size_factor) + ")",
@@ -435,7 +428,7 @@ static TetMesh tetrahedralize_centred(const SurfaceMesh& surface, const Atoms& a
     // Every tetrahedron is at most max_volume, so the domain needs at least volume / bound.
     const double domain_volume =
         want_exterior ? 4.0 / 3.0 * std::numbers::pi * std::pow(report.outer_radius, 3)
-                      : enclosed_volume(surface);
+                      : std::abs(enclosed_volume(surface.points, surface.triangles));
     const double tetrahedra = domain_volume / *options.max_volume;
     check_memory(tetrahedra * kBytesPerTetrahedron, options.max_memory_bytes,
                  "the tetrahedral mesh (at least " + format_number(tetrahedra) +
