@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "hierarchy/hierarchy_support.hpp"
 #include "molmesh/core/error.hpp"
 #include "molmesh/hierarchy/renumber.hpp"
 #include "molmesh/hierarchy/transfer.hpp"
@@ -29,32 +30,7 @@ fs::path scratch(const std::string& name) {
 const fs::path kChecker = fs::path(__FILE__).parent_path() / "check_hierarchy.py";
 
 Hierarchy synthetic_hierarchy() {
-  Hierarchy h;
-  for (int n : {6, 3}) {
-    HierarchyLevel level;
-    level.t0 = n == 6 ? 0.1 : 0.3;
-    TetMesh volume = testing::structured_cube(n, -2.0, 2.0);
-    level.volume_permutation = reverse_cuthill_mckee(volume);
-    level.volume = permute_vertices(volume, level.volume_permutation);
-    level.surface = testing::structured_cube_surface(n, -2.0, 2.0);
-    h.levels.push_back(std::move(level));
-  }
-  // Coarse surface vertices coincide with fine ones.
-  auto& coarse = h.levels[1];
-  const auto& fine = h.levels[0];
-  for (const auto& p : coarse.surface.points) {
-    int match = -1;
-    for (std::size_t f = 0; f < fine.surface.points.size(); ++f) {
-      if ((fine.surface.points[f] - p).norm() < 1e-12) match = static_cast<int>(f);
-    }
-    coarse.surface_provenance.push_back(match);
-  }
-  LevelTransfer t;
-  t.coarse_level = 1;
-  t.fine_level = 0;
-  t.volume = volume_prolongation(coarse.volume, fine.volume);
-  t.surface = surface_prolongation(coarse.surface, fine.surface, coarse.surface_provenance);
-  h.transfers.push_back(std::move(t));
+  Hierarchy h = testing::cube_hierarchy(6, 3);
   h.parameters = {{"domain", "full"}, {"t0", "0.1,0.3"}, {"spacing", "0.5"}};
   h.input_name = "cube.pqr";
   h.input_checksum = sha256_bytes({});

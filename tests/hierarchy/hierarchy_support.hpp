@@ -8,8 +8,42 @@
 #include <string>
 
 #include "molmesh/hierarchy/hierarchy.hpp"
+#include "molmesh/hierarchy/renumber.hpp"
+#include "molmesh/hierarchy/transfer.hpp"
+#include "support/structured_meshes.hpp"
 
 namespace molmesh::testing {
+
+// Two levels of a structured cube [-2, 2]^3 (n_fine and n_coarse cells per edge), renumbered,
+// with surface provenance and both prolongations: a small valid hierarchy file's contents.
+inline Hierarchy cube_hierarchy(int n_fine, int n_coarse) {
+  Hierarchy h;
+  for (int n : {n_fine, n_coarse}) {
+    HierarchyLevel level;
+    level.t0 = n == n_fine ? 0.1 : 0.3;
+    TetMesh volume = structured_cube(n, -2.0, 2.0);
+    level.volume_permutation = reverse_cuthill_mckee(volume);
+    level.volume = permute_vertices(volume, level.volume_permutation);
+    level.surface = structured_cube_surface(n, -2.0, 2.0);
+    h.levels.push_back(std::move(level));
+  }
+  // Coarse surface vertices coincide with fine ones.
+  auto& coarse = h.levels[1];
+  const auto& fine = h.levels[0];
+  for (const auto& p : coarse.surface.points) {
+    int match = -1;
+    for (std::size_t f = 0; f < fine.surface.points.size(); ++f)
+      if ((fine.surface.points[f] - p).norm() < 1e-12) match = static_cast<int>(f);
+    coarse.surface_provenance.push_back(match);
+  }
+  LevelTransfer t;
+  t.coarse_level = 1;
+  t.fine_level = 0;
+  t.volume = volume_prolongation(coarse.volume, fine.volume);
+  t.surface = surface_prolongation(coarse.surface, fine.surface, coarse.surface_provenance);
+  h.transfers.push_back(std::move(t));
+  return h;
+}
 
 inline Eigen::MatrixXd coordinates(const std::vector<Vec3>& points) {
   Eigen::MatrixXd x(static_cast<Eigen::Index>(points.size()), 3);

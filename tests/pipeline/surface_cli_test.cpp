@@ -88,7 +88,7 @@ TEST(SurfaceCli, ExitCodes) {
   const fs::path bad = dir.path / "bad.pqr";
   std::ofstream(bad) << "ATOM      1  N   ALA     1      nonsense\n";
   EXPECT_EQ(run("surface " + bad.string() + " -o " + (dir.path / "x.off").string()), 3);
-  EXPECT_EQ(run("surface " + data + "/1a1p.pqr -o " + (dir.path / "x.unknown").string()), 1);
+  EXPECT_EQ(run("surface " + data + "/1a1p.pqr -o " + (dir.path / "x.unknown").string()), 2);
   EXPECT_EQ(run("surface " + data + "/1a1p.pqr --raw -o " +
                 (dir.path / "no_such_dir" / "x.off").string()),
             4);

@@ -1,5 +1,5 @@
 // `molmesh tetmesh` end to end on a surface file: outputs in every format, --stats JSON,
-// and a bad output name rejected with exit code 1 before any work.
+// and a bad output name rejected with exit code 2 before any work.
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -49,7 +49,7 @@ TEST(CliTetmesh, SurfaceFileToEveryFormatWithStats) {
   const TetMesh back = read_mcsf(dir / "ion.m");
   EXPECT_EQ(back.tetrahedra.size(), j["tetrahedra"].get<std::size_t>());
 
-  EXPECT_EQ(run("tetmesh " + surf + " --outer-radius 15 -o " + (dir / "x.xyz").string()), 1);
+  EXPECT_EQ(run("tetmesh " + surf + " --outer-radius 15 -o " + (dir / "x.xyz").string()), 2);
   EXPECT_FALSE(fs::exists(dir / "x.xyz"));
   EXPECT_EQ(run("tetmesh " + surf + " --domain inside -o " + (dir / "x.m").string()), 2);
   // A single surface with no atoms but ratio sizing works; an enclosed-too-small sphere fails.

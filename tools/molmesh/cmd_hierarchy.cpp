@@ -20,6 +20,7 @@
 #include "molmesh/io/sphere_list.hpp"
 #include "molmesh/pipeline/surface_pipeline.hpp"
 #include "surface_options.hpp"
+#include "option_checks.hpp"
 
 namespace molmesh::cli {
 namespace {
@@ -93,6 +94,7 @@ void run(const HierarchyArgs& args, const CliContext& ctx) {
   options.tetmesh.min_dihedral_deg = args.min_dihedral;
   if (args.max_volume > 0) options.tetmesh.max_volume = args.max_volume;
   options.tetmesh.size_factor = args.size_factor;
+  options.tetmesh.max_memory_bytes = pipeline.blur.max_memory_bytes;
   options.size_growth = args.size_growth;
   options.renumber = !args.no_renumber;
 
@@ -163,7 +165,8 @@ const CommandRegistration registration{
              "-o,--output", args->output,
              "Output HDF5 file (OUT.h5); XDMF sidecars OUT.xdmf and OUT_L<L>_{volume,surface}.xdmf "
              "are written beside it")
-          ->required();
+          ->required()
+          ->check(output_extension({".h5"}));
       cmd->add_option(
              "--domain", args->domain,
              "Volume meshed on every level: interior (molecule), exterior (solvent up to the "
@@ -181,17 +184,17 @@ const CommandRegistration registration{
              "--t0,--coarsen", args->surface.pipeline.processing.t0,
              "Coarsening thresholds T0 (Eq. 6), one level each, finest first, non-decreasing")
           ->delimiter(',')
-          ->check(CLI::NonNegativeNumber)
+          ->check(finite_in(0, 1e3))
           ->capture_default_str()
           ->type_name("T0[,T0...]");
       cmd->add_option("--sphere-ratio", args->sphere_ratio,
                       "Outer sphere radius as a multiple of the molecule size (exterior/full)")
-          ->check(CLI::PositiveNumber)
+          ->check(finite_above(0, 1e4))
           ->capture_default_str();
       cmd->add_option(
              "--outer-radius", args->outer_radius,
              "Outer sphere radius in Å (overrides --sphere-ratio); the same on every level")
-          ->check(CLI::PositiveNumber);
+          ->check(finite_above(0, kMaxOuterRadius));
       cmd->add_option("--outer-sphere-subdivisions", args->outer_subdivisions,
                       "Icosphere subdivision level of the outer sphere (10*4^L+2 vertices)")
           ->check(CLI::Range(0, 6))
@@ -203,25 +206,25 @@ const CommandRegistration registration{
           ->check(CLI::ExistingFile);
       cmd->add_option("--max-radius-edge", args->max_radius_edge,
                       "TetGen quality bound: radius-edge ratio of tetrahedra")
-          ->check(CLI::Range(1.0, 100.0))
+          ->check(finite_in(1.0, 100.0))
           ->capture_default_str();
       cmd->add_option("--min-dihedral", args->min_dihedral,
                       "TetGen quality bound: minimum dihedral angle (degrees)")
-          ->check(CLI::Range(0.0, 30.0))
+          ->check(finite_in(0.0, 30.0))
           ->capture_default_str();
       cmd->add_option("--max-volume", args->max_volume, "Upper bound on tetrahedron volume (Å³)")
-          ->check(CLI::PositiveNumber);
+          ->check(finite_above(0, kLargestValue));
       cmd->add_option("--size-factor", args->size_factor,
                       "Size grading (TetGen -m): tetrahedra near the surface and the outer sphere "
                       "aim at their edge length times this factor, graded in between; smaller: "
                       "finer near the surface; 0: no grading")
-          ->check(CLI::NonNegativeNumber)
+          ->check(finite_in(0, 1000))
           ->capture_default_str();
       cmd->add_option("--size-growth", args->size_growth,
                       "Level L grades with --size-factor times this to the power L, so coarse "
                       "levels coarsen the far field too, not only the surface (1: same far field "
                       "on every level)")
-          ->check(CLI::Range(1.0, 10.0))
+          ->check(finite_in(1.0, 10.0))
           ->capture_default_str();
       cmd->add_flag("--no-renumber", args->no_renumber,
                     "Keep TetGen's vertex numbering (default: reverse Cuthill-McKee, permutation "

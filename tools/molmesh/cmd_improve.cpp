@@ -19,6 +19,7 @@
 #include "molmesh/processing/mesh_repair.hpp"
 #include "molmesh/processing/process_surface.hpp"
 #include "molmesh/surface/surface_stats.hpp"
+#include "option_checks.hpp"
 
 namespace molmesh::cli {
 namespace {
@@ -154,7 +155,7 @@ const CommandRegistration registration{
       cmd->add_option("--feature-weight", args->options.processing.improve.feature_weight,
                       "How strongly vertices on features are held in place during improvement "
                       "(0: not at all)")
-          ->check(CLI::NonNegativeNumber)
+          ->check(finite_in(0, kLargestValue))
           ->capture_default_str()
           ->type_name("W");
       cmd->add_option("--smooth-iterations", args->options.processing.smoothing.normal_iterations,
@@ -173,7 +174,7 @@ const CommandRegistration registration{
       cmd->add_option("--merge-tolerance", args->options.repair.merge_tolerance,
                       "Vertices closer than this (Å) are merged during repair (0: only exact "
                       "duplicates)")
-          ->check(CLI::NonNegativeNumber)
+          ->check(finite_in(0, kLargestValue))
           ->capture_default_str()
           ->type_name("D");
       cmd->callback([args, &ctx] { run(*args, ctx); });

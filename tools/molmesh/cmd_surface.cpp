@@ -11,6 +11,7 @@
 #include "molmesh/io/surface_mesh_io.hpp"
 #include "molmesh/io/volume_io.hpp"
 #include "molmesh/pipeline/surface_pipeline.hpp"
+#include "option_checks.hpp"
 #include "surface_options.hpp"
 
 namespace molmesh::cli {
@@ -107,6 +108,7 @@ const CommandRegistration registration{
           ->check(CLI::ExistingFile);
       cmd->add_option("-o,--output", args->output, "Output surface mesh (.off, .ply, .obj, .stl)")
           ->required()
+          ->check(output_extension({".off", ".ply", ".obj", ".stl"}))
           ->type_name("OUT");
       cmd->add_option("--stats", args->stats,
                       "Write surface metrics, stage timings and parameters as JSON to this file")

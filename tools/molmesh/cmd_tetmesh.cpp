@@ -16,6 +16,7 @@
 #include "molmesh/pipeline/surface_pipeline.hpp"
 #include "molmesh/tetmesh/tet_stats.hpp"
 #include "molmesh/tetmesh/tetrahedralize.hpp"
+#include "option_checks.hpp"
 #include "surface_options.hpp"
 
 namespace molmesh::cli {
@@ -50,14 +51,7 @@ void run(const TetmeshArgs& args, const CliContext& ctx) {
   if (args.outer_radius > 0.0) options.outer_radius = args.outer_radius;
   if (args.max_volume > 0.0) options.max_volume = args.max_volume;
   if (!args.active_site.empty()) options.active_site = read_spheres(args.active_site);
-
-  // Fail on a bad output name before the expensive work.
-  {
-    const std::string ext = std::filesystem::path(args.output).extension().string();
-    if (ext != ".m" && ext != ".mcsf" && ext != ".vtu" && ext != ".msh" && ext != ".msh4")
-      throw Error("cannot tell the volume mesh format of '" + args.output + "'; use " +
-                  volume_mesh_extensions());
-  }
+  options.max_memory_bytes = args.surface.pipeline.blur.max_memory_bytes;
 
   Atoms atoms;
   SurfaceMesh surface;
@@ -137,6 +131,7 @@ const CommandRegistration registration{
                       "Output volume mesh: .m/.mcsf (FETK MCSF, for APBS/SMOL), .vtu (VTK), "
                       ".msh (Gmsh 2.2), .msh4 (Gmsh 4.1 written under that name)")
           ->required()
+          ->check(output_extension({".m", ".mcsf", ".vtu", ".msh", ".msh4"}))
           ->type_name("OUT");
       cmd->add_option("--domain", args->domain,
                       "interior: the molecule (region 1); exterior: the solvent between the "
@@ -150,11 +145,11 @@ const CommandRegistration registration{
       cmd->add_option("--sphere-ratio", args->tet.sphere_ratio,
                       "Outer sphere radius as a multiple of the molecule size (largest distance "
                       "of an atom centre from their mean; of a surface point for surface input)")
-          ->check(CLI::PositiveNumber)
+          ->check(finite_above(0, 1e4))
           ->capture_default_str();
       cmd->add_option("--outer-radius", args->outer_radius,
                       "Outer sphere radius in Å (overrides --sphere-ratio; needed for one atom)")
-          ->check(CLI::PositiveNumber)
+          ->check(finite_above(0, kMaxOuterRadius))
           ->type_name("R");
       cmd->add_option("--sphere-subdivisions", args->tet.outer_sphere_subdivisions,
                       "Outer sphere triangulation: icosahedron subdivided L times (10*4^L+2 "
@@ -168,21 +163,21 @@ const CommandRegistration registration{
           ->type_name("FILE");
       cmd->add_option("--max-radius-edge", args->tet.max_radius_edge_ratio,
                       "TetGen -q radius-edge ratio bound (smaller: better tets, more points)")
-          ->check(CLI::PositiveNumber)
+          ->check(finite_in(1, 1000))
           ->capture_default_str();
       cmd->add_option("--min-dihedral", args->tet.min_dihedral_deg,
                       "TetGen -q minimum dihedral angle in degrees (sought by its optimiser)")
-          ->check(CLI::Range(0.0, 70.0))
+          ->check(finite_in(0.0, 70.0))
           ->capture_default_str();
       cmd->add_option("--max-volume", args->max_volume,
                       "TetGen -a: largest tetrahedron volume in Å^3 (default: unbounded)")
-          ->check(CLI::PositiveNumber)
+          ->check(finite_above(0, kLargestValue))
           ->type_name("V");
       cmd->add_option("--size-factor", args->tet.size_factor,
                       "Size grading (TetGen -m): tetrahedra near an input vertex aim at its mean "
                       "edge length times this factor, interpolated between the molecular surface "
                       "and the outer sphere; smaller: finer near the surface; 0: no grading")
-          ->check(CLI::NonNegativeNumber)
+          ->check(finite_in(0, 1000))
           ->capture_default_str();
       cmd->add_option("--tetgen-switches", args->tet.tetgen_switches,
                       "Expert: TetGen switches replacing the ones above (e.g. pYq1.5/15); molmesh "

@@ -7,11 +7,14 @@
 
 #include "cli_context.hpp"
 #include "command_registry.hpp"
+#include "molmesh/core/atomic_file.hpp"
 #include "molmesh/core/error.hpp"
 #include "molmesh/core/version.hpp"
 
 int main(int argc, char** argv) {
   using namespace molmesh::cli;
+  // Ctrl-C / SIGTERM delete the temporaries of outputs being written (docs/cli.md).
+  molmesh::install_interrupt_cleanup();
   CLI::App app{"molmesh: molecules to adaptive surface and tetrahedral meshes (GAMer method)"};
   app.require_subcommand(1);
   app.set_version_flag("--version", std::string("molmesh ") + molmesh::version());

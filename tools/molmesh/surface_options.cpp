@@ -3,6 +3,8 @@
 #include <map>
 #include <string>
 
+#include "option_checks.hpp"
+
 namespace molmesh::cli {
 
 void add_atom_options(CLI::App& cmd, AtomReadOptions& options) {
@@ -41,7 +43,7 @@ void add_surface_pipeline_options(CLI::App& cmd, SurfacePipelineOptions& options
   cmd.add_option("--spacing", options.blur.spacing,
                  "Grid spacing of the blurred volume in Å (smaller: finer surface, more "
                  "vertices, more memory)")
-      ->check(CLI::PositiveNumber)
+      ->check(finite_above(0, kLargestValue))
       ->capture_default_str()
       ->type_name("H");
   cmd.add_option(
@@ -49,21 +51,22 @@ void add_surface_pipeline_options(CLI::App& cmd, SurfacePipelineOptions& options
          "(gaussian) Blobbyness B < 0 of the Gaussian kernel exp(B(|x-c|^2/r^2 - 1)) for atoms "
          "without their own; closer to 0 blurs more, more negative follows the atoms "
          "closely")
-      ->check(CLI::Range(-1e6, -1e-12))
+      ->check(finite_in(-1e6, -1e-12))
       ->capture_default_str()
       ->type_name("B");
   cmd.add_option(
          "--isovalue", options.isovalue,
          "(gaussian) Level of the blurred volume that is the surface (the volume is 1 on a lone "
          "atom's sphere)")
-      ->check(CLI::PositiveNumber)
+      ->check(finite_above(0, kLargestValue))
       ->capture_default_str()
       ->type_name("T");
   cmd.add_option("--min-cavity-volume", options.min_cavity_volume,
                  "Drop interior cavities enclosing less than V Å^3 (0 keeps all)")
-      ->check(CLI::NonNegativeNumber)
+      ->check(finite_in(0, kLargestValue))
       ->capture_default_str()
       ->type_name("V");
+  add_max_memory_option(cmd, options.blur.max_memory_bytes);
   cmd.add_flag("--raw", options.raw,
                "Stop after marching cubes: no quality improvement, coarsening or smoothing");
   cmd.add_option("--blur", options.blur_method,
@@ -82,7 +85,7 @@ void add_surface_pipeline_options(CLI::App& cmd, SurfacePipelineOptions& options
                  "coarsen -> smooth -> improve per value (larger T0 deletes more vertices; "
                  "the paper uses 0.2 once)")
       ->delimiter(',')
-      ->check(CLI::NonNegativeNumber)
+      ->check(finite_in(0, kLargestValue))
       ->capture_default_str()
       ->type_name("T0[,T0...]");
   cmd.add_option("--rings", options.processing.rings,
@@ -93,13 +96,13 @@ void add_surface_pipeline_options(CLI::App& cmd, SurfacePipelineOptions& options
       ->type_name("K");
   cmd.add_option("--alpha", options.processing.alpha,
                  "Exponent of the longest incident edge in Eq. 6 (weight of sparseness)")
-      ->check(CLI::NonNegativeNumber)
+      ->check(finite_in(0, kLargestValue))
       ->capture_default_str()
       ->type_name("A");
   cmd.add_option("--beta", options.processing.beta,
                  "Exponent of lambda2/lambda1 in Eq. 6 (weight of curvature: larger keeps "
                  "curved regions denser)")
-      ->check(CLI::NonNegativeNumber)
+      ->check(finite_in(0, kLargestValue))
       ->capture_default_str()
       ->type_name("B");
   cmd.add_option("--keep-spheres", options.keep_spheres_file,

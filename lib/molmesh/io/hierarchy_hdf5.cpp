@@ -1,19 +1,30 @@
 #include "molmesh/io/hierarchy_hdf5.hpp"
 
 #include <hdf5.h>
+#include <poll.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
+#include <chrono>
+#include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
+#include <mutex>
 #include <optional>
+#include <set>
 #include <stdexcept>
 #include <utility>
 
 #include "molmesh/core/atomic_file.hpp"
 #include "molmesh/core/error.hpp"
 #include "molmesh/io/xdmf.hpp"
+#include "molmesh/tetmesh/markers.hpp"
 
 namespace molmesh {
 namespace {
@@ -162,6 +173,18 @@ std::vector<T> read_dataset(hid_t loc, const std::string& name, std::size_t cols
                     (cols == 0 ? std::string("1-D") : "N x " + std::to_string(cols)) + ")");
   }
   const std::size_t rows = dims[0];
+  // A damaged header can declare any size: refuse more values than the file could hold
+  // (deflate compresses at most ~1032:1) before allocating them.
+  hsize_t file_bytes = 0;
+  {
+    Handle owner(H5Iget_file_id(loc), H5Fclose, "file of " + name);
+    check(H5Fget_filesize(owner.get(), &file_bytes), "size of the file");
+  }
+  const double bytes = static_cast<double>(rows) * static_cast<double>(cols == 0 ? 1 : cols) *
+                       static_cast<double>(sizeof(T));
+  if (bytes > 1100.0 * static_cast<double>(file_bytes) + 1048576.0)
+    throw H5Failure("dataset " + name + " declares " + std::to_string(rows) +
+                    " rows, more than the file can hold");
   if (rows_out) *rows_out = rows;
   std::vector<T> values(rows * (cols == 0 ? 1 : cols));
   if (!values.empty()) {
@@ -341,6 +364,60 @@ void write_level(hid_t file, int index, const HierarchyLevel& level) {
   create_group(file, volume + "fields");
 }
 
+// Contents a solver would trust: sizes agree, values are finite, markers are ones the
+// mesher writes (markers.hpp), the permutation is one. A damaged file must be refused here
+// rather than produce garbage or crash later.
+void check_finite(const std::vector<Vec3>& points, const std::string& what) {
+  for (std::size_t i = 0; i < points.size(); ++i)
+    if (!points[i].allFinite())
+      throw H5Failure(what + ": point " + std::to_string(i) + " is not finite");
+}
+
+void check_length(std::size_t got, std::size_t want, const std::string& what, bool may_be_empty) {
+  if (got == want || (may_be_empty && got == 0)) return;
+  throw H5Failure(what + " has " + std::to_string(got) + " values, expected " +
+                  std::to_string(want));
+}
+
+void check_values(const std::vector<int>& values, std::initializer_list<int> allowed,
+                  const std::string& what) {
+  for (std::size_t i = 0; i < values.size(); ++i)
+    if (std::find(allowed.begin(), allowed.end(), values[i]) == allowed.end())
+      throw H5Failure(what + "[" + std::to_string(i) + "] = " + std::to_string(values[i]) +
+                      " is not a valid marker");
+}
+
+void validate_level(const HierarchyLevel& level, const std::string& base) {
+  using namespace markers;
+  if (!std::isfinite(level.t0)) throw H5Failure(base + ": t0 is not finite");
+  const SurfaceMesh& s = level.surface;
+  check_finite(s.points, base + "/surface/points");
+  check_length(s.vertex_markers.size(), s.points.size(), base + "/surface/vertex_markers", true);
+  check_length(s.face_markers.size(), s.triangles.size(), base + "/surface/face_markers", true);
+  const TetMesh& v = level.volume;
+  const std::string volume = base + "/volume/";
+  check_finite(v.points, volume + "points");
+  check_length(v.cell_markers.size(), v.tetrahedra.size(), volume + "cell_markers", false);
+  check_values(v.cell_markers, {kMoleculeRegion, kSolventRegion}, volume + "cell_markers");
+  check_length(v.vertex_markers.size(), v.points.size(), volume + "vertex_markers", false);
+  check_values(v.vertex_markers, {kNoMarker, kMolecularSurface, kOuterSphere, kActiveSite},
+               volume + "vertex_markers");
+  check_length(v.boundary_face_markers.size(), v.boundary_faces.size(),
+               volume + "boundary_face_markers", false);
+  check_values(v.boundary_face_markers, {kNoMarker, kMolecularSurface, kOuterSphere, kActiveSite},
+               volume + "boundary_face_markers");
+  const auto& permutation = level.volume_permutation;
+  check_length(permutation.size(), v.points.size(), volume + "permutation", true);
+  std::vector<char> seen(permutation.size(), 0);
+  for (std::size_t i = 0; i < permutation.size(); ++i) {
+    const int p = permutation[i];
+    if (p < 0 || static_cast<std::size_t>(p) >= permutation.size() || seen[p])
+      throw H5Failure(volume + "permutation[" + std::to_string(i) + "] = " + std::to_string(p) +
+                      " is not a permutation of 0.." + std::to_string(permutation.size() - 1));
+    seen[p] = 1;
+  }
+}
+
 HierarchyLevel read_level(hid_t file, int index) {
   const auto base = level_path(index);
   if (!link_exists(file, base)) throw H5Failure("missing group " + base);
@@ -378,11 +455,13 @@ HierarchyLevel read_level(hid_t file, int index) {
   check_range(level.surface.triangles, level.surface.points.size(), "surface/triangles");
   check_range(level.volume.tetrahedra, level.volume.points.size(), "volume/tetrahedra");
   check_range(level.volume.boundary_faces, level.volume.points.size(), "volume/boundary_faces");
+  validate_level(level, base);
   return level;
 }
 
 // Opens an existing file and checks it is a molmesh hierarchy; returns it and its level count.
-std::pair<Handle, int> open_hierarchy(const std::filesystem::path& path, unsigned flags) {
+// Only for files already probed (probe_hierarchy) or just written by us.
+std::pair<Handle, int> open_unprobed(const std::filesystem::path& path, unsigned flags) {
   silence_hdf5();
   if (!std::filesystem::exists(path)) throw InputError(path.string(), "no such file");
   if (H5Fis_hdf5(path.c_str()) <= 0) {
@@ -394,7 +473,12 @@ std::pair<Handle, int> open_hierarchy(const std::filesystem::path& path, unsigne
   } catch (const H5Failure&) {
     throw InputError(path.string(), "cannot open the HDF5 file");
   }
-  const auto format = read_string_attribute(file.get(), "format");
+  std::optional<std::string> format;
+  try {
+    format = read_string_attribute(file.get(), "format");
+  } catch (const H5Failure& e) {
+    throw InputError(path.string(), std::string("damaged HDF5 file: ") + e.what());
+  }
   if (!format || *format != kHierarchyFormatName) {
     throw InputError(path.string(), "not a molmesh hierarchy (no root attribute format=\"" +
                                         std::string(kHierarchyFormatName) + "\")");
@@ -467,7 +551,7 @@ XdmfMesh describe_mesh(hid_t file, int level, const std::string& part, const std
 // Regenerates every XDMF sidecar from what the HDF5 file holds (sizes and fields), so the
 // sidecars always describe the file as it is.
 void write_sidecars(const std::filesystem::path& h5) {
-  auto [file, levels] = open_hierarchy(h5, H5F_ACC_RDONLY);
+  auto [file, levels] = open_unprobed(h5, H5F_ACC_RDONLY);
   const std::string reference = h5.filename().string();
   const auto folder = h5.parent_path();
   std::vector<XdmfMesh> all;
@@ -488,10 +572,39 @@ void write_sidecars(const std::filesystem::path& h5) {
   write_xdmf(folder / (h5.stem().string() + ".xdmf"), reference, all, true);
 }
 
-void write_whole_file(const std::filesystem::path& target, const Hierarchy& hierarchy) {
+// HDF5 files are built in memory (the core driver without a backing store) and their bytes
+// written by write_file_atomically. libhdf5 1.10 cannot close a file whose flush failed:
+// it stays open and H5_term_library crashed at exit after a full disk (issue 18). In
+// memory nothing can fail that way, and the disk write gets the same checks, temporaries,
+// signal cleanup and special-file handling as every other output.
+Handle in_memory_access() {
   Handle fapl(H5Pcreate(H5P_FILE_ACCESS), H5Pclose, "file access list");
   // Readable by HDF5 1.8 and later (h5py, ParaView) while allowing compact new-style groups.
   check(H5Pset_libver_bounds(fapl.get(), H5F_LIBVER_EARLIEST, H5F_LIBVER_LATEST), "libver");
+  check(H5Pset_fapl_core(fapl.get(), 1 << 20, 0), "memory file driver");
+  return fapl;
+}
+
+std::vector<char> file_image(hid_t file) {
+  check(H5Fflush(file, H5F_SCOPE_GLOBAL), "flush");
+  const ssize_t size = H5Fget_file_image(file, nullptr, 0);
+  if (size <= 0) throw H5Failure("size of the file image");
+  std::vector<char> image(static_cast<std::size_t>(size));
+  if (H5Fget_file_image(file, image.data(), image.size()) != size) throw H5Failure("file image");
+  return image;
+}
+
+void write_image(const std::filesystem::path& path, const std::vector<char>& image) {
+  write_file_atomically(
+      path,
+      [&](std::ostream& out) {
+        out.write(image.data(), static_cast<std::streamsize>(image.size()));
+      },
+      true);
+}
+
+std::vector<char> hierarchy_image(const std::filesystem::path& target, const Hierarchy& hierarchy) {
+  Handle fapl = in_memory_access();
   Handle file(H5Fcreate(target.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, fapl.get()), H5Fclose,
               "cannot create the HDF5 file");
   const hid_t root = file.get();
@@ -525,7 +638,7 @@ void write_whole_file(const std::filesystem::path& target, const Hierarchy& hier
     write_csr(root, base + "/volume", transfer.volume);
     write_csr(root, base + "/surface", transfer.surface);
   }
-  check(H5Fflush(root, H5F_SCOPE_GLOBAL), "flush");
+  return file_image(root);
 }
 
 herr_t collect_parameter(hid_t loc, const char* name, const H5A_info_t*, void* data) {
@@ -547,6 +660,112 @@ void validate_field_name(const std::string& name) {
   }
 }
 
+Hierarchy read_contents(const std::filesystem::path& path);
+
+// --- containing libhdf5 ---------------------------------------------------------------------
+// libhdf5 1.10 crashes (SIGSEGV in H5A__close from H5Aiterate2) or loops forever on some
+// damaged files: 4 bytes changed in the metadata were enough (issue 18). No check of the
+// file's structure ahead of libhdf5 can rule that out, so the first read of a file runs in
+// a child process: everything a reader here will touch is read there once. If the child
+// dies or runs out of time, the file is refused (InputError, exit code 3) and this process
+// never hands the file to libhdf5; otherwise the real read repeats what is known to work.
+// Costs one extra read of the file (docs/formats.md, "Damaged files").
+void read_everything(const std::filesystem::path& path) {
+  read_contents(path);
+  auto [file, levels] = open_unprobed(path, H5F_ACC_RDONLY);
+  for (int level = 0; level < levels; ++level)
+    for (const auto& name : field_names(file.get(), level))
+      read_dataset<double>(file.get(), level_path(level) + "/volume/fields/" + name, 0);
+}
+
+std::string probe_key(const std::filesystem::path& path) {
+  std::error_code ec;
+  const auto size = std::filesystem::file_size(path, ec);
+  const auto time = std::filesystem::last_write_time(path, ec).time_since_epoch().count();
+  return std::filesystem::absolute(path).string() + "|" + std::to_string(size) + "|" +
+         std::to_string(time);
+}
+
+void probe_hierarchy(const std::filesystem::path& path) {
+  if (!std::filesystem::exists(path)) throw InputError(path.string(), "no such file");
+  static std::mutex mutex;
+  static std::set<std::string> probed;  // files this process has read safely already
+  const std::string key = probe_key(path);
+  {
+    const std::lock_guard lock(mutex);
+    if (probed.count(key)) return;
+  }
+  int channel[2];
+  if (::pipe(channel) != 0) throw InputError(path.string(), "cannot start the reader");
+  std::fflush(nullptr);
+  const pid_t child = ::fork();
+  if (child < 0) {
+    ::close(channel[0]);
+    ::close(channel[1]);
+    throw InputError(path.string(), "cannot start the reader");
+  }
+  if (child == 0) {
+    ::close(channel[0]);
+    std::string message;
+    int code = 0;
+    try {
+      read_everything(path);
+    } catch (const std::exception& e) {
+      message = e.what();
+      code = 3;
+    }
+    if (!message.empty() && ::write(channel[1], message.data(), message.size()) < 0) code = 4;
+    ::_exit(code);  // no atexit handlers, no HDF5 shutdown: just the verdict
+  }
+  ::close(channel[1]);
+  // Generous: reading a 100 MB hierarchy takes about a second.
+  const double seconds = 60.0 + static_cast<double>(std::filesystem::file_size(path)) / 1e7;
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
+  std::string message;
+  bool timed_out = false;
+  for (;;) {
+    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(
+                          deadline - std::chrono::steady_clock::now())
+                          .count();
+    if (left <= 0) {
+      timed_out = true;
+      break;
+    }
+    pollfd fd{channel[0], POLLIN, 0};
+    const int ready = ::poll(&fd, 1, static_cast<int>(std::min<long long>(left, 1000)));
+    if (ready < 0 && errno == EINTR) continue;
+    if (ready <= 0) continue;
+    char buffer[4096];
+    const ssize_t n = ::read(channel[0], buffer, sizeof buffer);
+    if (n <= 0) break;  // EOF: the child is done
+    message.append(buffer, static_cast<std::size_t>(n));
+  }
+  ::close(channel[0]);
+  if (timed_out) ::kill(child, SIGKILL);
+  int status = 0;
+  while (::waitpid(child, &status, 0) < 0 && errno == EINTR) {
+  }
+  if (timed_out)
+    throw InputError(path.string(), "damaged HDF5 file: reading it did not finish within " +
+                                        std::to_string(static_cast<int>(seconds)) + " s");
+  if (WIFSIGNALED(status))
+    throw InputError(path.string(), "damaged HDF5 file: libhdf5 crashed reading it (signal " +
+                                        std::to_string(WTERMSIG(status)) + ")");
+  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
+    // The child's InputError already starts with the file name.
+    const std::string prefix = path.string() + ": ";
+    if (message.rfind(prefix, 0) == 0) message.erase(0, prefix.size());
+    throw InputError(path.string(), message.empty() ? "damaged HDF5 file" : message);
+  }
+  const std::lock_guard lock(mutex);
+  probed.insert(key);
+}
+
+std::pair<Handle, int> open_hierarchy(const std::filesystem::path& path, unsigned flags) {
+  probe_hierarchy(path);
+  return open_unprobed(path, flags);
+}
+
 }  // namespace
 
 void write_hierarchy(const std::filesystem::path& path, const Hierarchy& hierarchy) {
@@ -555,13 +774,13 @@ void write_hierarchy(const std::filesystem::path& path, const Hierarchy& hierarc
     throw Error("hierarchy has " + std::to_string(hierarchy.levels.size()) + " levels but " +
                 std::to_string(hierarchy.transfers.size()) + " transfer operators");
   }
-  write_path_atomically(path, [&](const std::filesystem::path& temporary) {
-    try {
-      write_whole_file(temporary, hierarchy);
-    } catch (const H5Failure& e) {
-      throw OutputError(path.string() + ": HDF5: " + e.what());
-    }
-  });
+  std::vector<char> image;
+  try {
+    image = hierarchy_image(path, hierarchy);
+  } catch (const H5Failure& e) {
+    throw OutputError(path.string() + ": HDF5: " + e.what());
+  }
+  write_image(path, image);
   try {
     write_sidecars(path);
   } catch (const H5Failure& e) {
@@ -570,7 +789,14 @@ void write_hierarchy(const std::filesystem::path& path, const Hierarchy& hierarc
 }
 
 Hierarchy read_hierarchy(const std::filesystem::path& path) {
-  auto [file, levels] = open_hierarchy(path, H5F_ACC_RDONLY);
+  probe_hierarchy(path);
+  return read_contents(path);
+}
+
+namespace {
+
+Hierarchy read_contents(const std::filesystem::path& path) {
+  auto [file, levels] = open_unprobed(path, H5F_ACC_RDONLY);
   Hierarchy hierarchy;
   try {
     const hid_t root = file.get();
@@ -598,6 +824,17 @@ Hierarchy read_hierarchy(const std::filesystem::path& path) {
               static_cast<Eigen::Index>(coarse_level.surface.points.size())) {
         throw H5Failure(base + ": matrix shape does not match the level sizes");
       }
+      for (const SparseMatrix* m : {&transfer.volume, &transfer.surface})
+        for (Eigen::Index k = 0; k < m->nonZeros(); ++k)
+          if (!std::isfinite(m->valuePtr()[k]))
+            throw H5Failure(base + ": a prolongation weight is not finite");
+      const auto& provenance = coarse_level.surface_provenance;
+      check_length(provenance.size(), coarse_level.surface.points.size(),
+                   level_path(fine + 1) + "/surface/provenance", true);
+      for (int p : provenance)
+        if (p < 0 || static_cast<std::size_t>(p) >= fine_level.surface.points.size())
+          throw H5Failure(level_path(fine + 1) + "/surface/provenance: vertex " +
+                          std::to_string(p) + " out of range");
       hierarchy.transfers.push_back(std::move(transfer));
     }
   } catch (const H5Failure& e) {
@@ -605,6 +842,8 @@ Hierarchy read_hierarchy(const std::filesystem::path& path) {
   }
   return hierarchy;
 }
+
+}  // namespace
 
 void write_point_field(const std::filesystem::path& h5, int level, const std::string& name,
                        std::span<const double> values) {
@@ -627,21 +866,21 @@ void write_point_field(const std::filesystem::path& h5, int level, const std::st
                   " volume vertices");
     }
   }
-  write_path_atomically(h5, [&](const std::filesystem::path& temporary) {
-    std::filesystem::copy_file(h5, temporary, std::filesystem::copy_options::overwrite_existing);
-    try {
-      Handle file(H5Fopen(temporary.c_str(), H5F_ACC_RDWR, H5P_DEFAULT), H5Fclose,
-                  "cannot open for writing");
-      const auto dataset = level_path(level) + "/volume/fields/" + name;
-      if (link_exists(file.get(), dataset)) {
-        check(H5Ldelete(file.get(), dataset.c_str(), H5P_DEFAULT), "cannot replace " + dataset);
-      }
-      write_dataset(file.get(), dataset, values.data(), values.size(), 0);
-      check(H5Fflush(file.get(), H5F_SCOPE_GLOBAL), "flush");
-    } catch (const H5Failure& e) {
-      throw OutputError(h5.string() + ": HDF5: " + e.what());
+  std::vector<char> image;
+  try {
+    // The whole file is read into memory, edited there and written back atomically.
+    Handle fapl = in_memory_access();
+    Handle file(H5Fopen(h5.c_str(), H5F_ACC_RDWR, fapl.get()), H5Fclose, "cannot open for writing");
+    const auto dataset = level_path(level) + "/volume/fields/" + name;
+    if (link_exists(file.get(), dataset)) {
+      check(H5Ldelete(file.get(), dataset.c_str(), H5P_DEFAULT), "cannot replace " + dataset);
     }
-  });
+    write_dataset(file.get(), dataset, values.data(), values.size(), 0);
+    image = file_image(file.get());
+  } catch (const H5Failure& e) {
+    throw OutputError(h5.string() + ": HDF5: " + e.what());
+  }
+  write_image(h5, image);
   try {
     write_sidecars(h5);
   } catch (const H5Failure& e) {

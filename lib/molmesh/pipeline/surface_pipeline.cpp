@@ -1,6 +1,7 @@
 #include "molmesh/pipeline/surface_pipeline.hpp"
 
 #include <chrono>
+#include <cmath>
 #include <memory>
 #include <string>
 #include <utility>
@@ -19,10 +20,29 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-// Marching cubes, cavity removal, then processing (unless raw).
+// The centre of the local frame atoms are blurred and meshed in: their mean, rounded to a
+// multiple of the grid spacing so that moving a molecule by whole cells moves nothing but
+// this centre (the results are then the same wherever the molecule sits, issue 18).
+Vec3 frame_centre(const Atoms& atoms, double spacing) {
+  Vec3 sum = Vec3::Zero();
+  std::size_t n = 0;
+  for (const auto& a : atoms) {
+    if (!a.center.allFinite()) return Vec3::Zero();  // the blur refuses it with a message
+    sum += a.center;
+    ++n;
+  }
+  if (n == 0 || !(spacing > 0.0) || !std::isfinite(spacing)) return Vec3::Zero();
+  const Vec3 mean = sum / static_cast<double>(n);
+  return Vec3(std::round(mean.x() / spacing) * spacing, std::round(mean.y() / spacing) * spacing,
+              std::round(mean.z() / spacing) * spacing);
+}
+
+// Marching cubes, cavity removal, then processing (unless raw). `centre` is the local
+// frame's origin in input coordinates (keep spheres are given in input coordinates).
 void extract_and_process(const Grid& grid, double level, const SurfacePipelineOptions& options,
                          const std::function<Vec3(const Vec3&)>& projection,
-                         const Reporter& reporter, SurfacePipelineResult& result) {
+                         const Reporter& reporter, SurfacePipelineResult& result,
+                         const Vec3& centre = Vec3::Zero()) {
   auto start = Clock::now();
   result.level = level;
   SurfaceMesh raw = marching_cubes(grid, level, reporter);
@@ -55,8 +75,10 @@ void extract_and_process(const Grid& grid, double level, const SurfacePipelineOp
   if (options.keep_on_surface && projection && !processing.project) processing.project = projection;
   processing.record_stages = processing.record_stages && options.measure;
   if (!options.keep_spheres_file.empty()) {
-    for (const Sphere& s : read_spheres(options.keep_spheres_file))
+    for (Sphere s : read_spheres(options.keep_spheres_file)) {
+      s.center -= centre;
       processing.keep_spheres.push_back(s);
+    }
   }
   ProcessingResult processed = process_surface(result.raw, processing, reporter);
   for (ProcessingStage& stage : processed.stages)
@@ -97,16 +119,35 @@ Grid surface_volume(const Atoms& atoms, const SurfacePipelineOptions& options,
 SurfacePipelineResult surface_from_atoms(const Atoms& atoms, const SurfacePipelineOptions& options,
                                          const Reporter& reporter) {
   SurfacePipelineResult result;
+  // Local frame: far from the origin (1e6 Å and more) coordinates lose the digits the
+  // processing needs; shifted to the molecule's centre they keep them.
+  const Vec3 centre = frame_centre(atoms, options.blur.spacing);
+  SurfacePipelineOptions local_options = options;
+  for (Sphere& s : local_options.processing.keep_spheres) s.center -= centre;
+  Atoms local_atoms = atoms;
+  for (Atom& a : local_atoms) a.center -= centre;
   const auto start = Clock::now();
-  auto grid = std::make_shared<Grid>(surface_volume(atoms, options, reporter));
+  auto grid = std::make_shared<Grid>(surface_volume(local_atoms, options, reporter));
   result.stages.push_back({options.surface == SurfaceKind::kGaussian ? "blur" : "distance field",
                            seconds_since(start), std::nullopt});
   result.grid_dims = grid->dims;
   // Distance-field surfaces are exact level sets: processing keeps its vertices on them.
+  std::function<Vec3(const Vec3&)> local_projection;
   if (options.surface != SurfaceKind::kGaussian)
-    result.projection = level_set_projection(grid, level_of(options));
-  extract_and_process(*grid, level_of(options), options, result.projection, reporter, result);
-  if (options.keep_volume) result.volume = *grid;
+    local_projection = level_set_projection(grid, level_of(options));
+  extract_and_process(*grid, level_of(options), local_options, local_projection, reporter, result,
+                      centre);
+  for (auto* mesh : {&result.raw, &result.surface})
+    for (Vec3& p : mesh->points) p += centre;
+  // Callers (the hierarchy) project meshes in input coordinates.
+  if (local_projection)
+    result.projection = [local_projection, centre](const Vec3& p) {
+      return Vec3(local_projection(p - centre) + centre);
+    };
+  if (options.keep_volume) {
+    result.volume = *grid;
+    result.volume.origin += centre;
+  }
   return result;
 }
 

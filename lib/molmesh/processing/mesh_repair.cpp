@@ -26,7 +26,11 @@ EdgeKey edge_key(int a, int b) {
 
 struct CellHash {
   std::size_t operator()(const std::array<std::int64_t, 3>& c) const {
-    return static_cast<std::size_t>(c[0] * 73856093LL ^ c[1] * 19349663LL ^ c[2] * 83492791LL);
+    // Unsigned arithmetic: the products wrap (defined) instead of overflowing a signed
+    // integer for coordinates beyond ~1e7 cells.
+    const auto u = [](std::int64_t v) { return static_cast<std::uint64_t>(v); };
+    return static_cast<std::size_t>(u(c[0]) * 73856093ull ^ u(c[1]) * 19349663ull ^
+                                    u(c[2]) * 83492791ull);
   }
 };
 
@@ -41,9 +45,12 @@ std::vector<int> merge_map(const std::vector<Vec3>& points, double tol) {
     const Vec3& p = points[v];
     if (!p.allFinite())
       throw Error("vertex " + std::to_string(v + 1) + " has a non-finite coordinate");
-    const std::array<std::int64_t, 3> c{static_cast<std::int64_t>(std::floor(p.x() / cell)),
-                                        static_cast<std::int64_t>(std::floor(p.y() / cell)),
-                                        static_cast<std::int64_t>(std::floor(p.z() / cell))};
+    // Clamped so the conversion stays defined for any finite coordinate (a clamped cell
+    // only gathers more candidates; closeness is decided by the distance below).
+    const auto cell_of = [cell](double x) {
+      return static_cast<std::int64_t>(std::clamp(std::floor(x / cell), -1e18, 1e18));
+    };
+    const std::array<std::int64_t, 3> c{cell_of(p.x()), cell_of(p.y()), cell_of(p.z())};
     int found = -1;
     const int reach = tol > 0.0 ? 1 : 0;
     for (int dz = -reach; dz <= reach; ++dz) {

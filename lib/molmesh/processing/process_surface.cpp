@@ -13,6 +13,7 @@
 #include "molmesh/processing/coarsen.hpp"
 #include "molmesh/processing/edge_flips.hpp"
 #include "molmesh/processing/halfedge_mesh.hpp"
+#include "molmesh/processing/untangle.hpp"
 
 namespace molmesh {
 namespace {
@@ -53,9 +54,42 @@ void project_vertices(SurfaceMesh& mesh, const std::function<Vec3(const Vec3&)>&
                     });
 }
 
+ProcessingResult process_centred(const SurfaceMesh& input, const ProcessingOptions& options,
+                                 const Reporter& reporter);
+
 }  // namespace
 
 ProcessingResult process_surface(const SurfaceMesh& input, const ProcessingOptions& options,
+                                 const Reporter& reporter) {
+  // Local frame: the processing's geometric tests lose their digits on coordinates far from
+  // the origin (a molecule at 1e7 Å came out with 1e6 times its area, issue 18). Process
+  // around the bounding-box centre, then shift back.
+  if (input.points.empty()) return process_centred(input, options, reporter);
+  Vec3 lo = input.points.front(), hi = lo;
+  for (const Vec3& p : input.points) {
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  }
+  const Vec3 centre = (lo + hi) / 2.0;
+  if (!centre.allFinite()) return process_centred(input, options, reporter);
+  SurfaceMesh local = input;
+  for (Vec3& p : local.points) p -= centre;
+  ProcessingOptions local_options = options;
+  for (Sphere& s : local_options.keep_spheres) s.center -= centre;
+  if (options.project) {
+    // The projection works in the caller's coordinates.
+    local_options.project = [project = options.project, centre](const Vec3& p) {
+      return Vec3(project(p + centre) - centre);
+    };
+  }
+  ProcessingResult result = process_centred(local, local_options, reporter);
+  for (Vec3& p : result.mesh.points) p += centre;
+  return result;
+}
+
+namespace {
+
+ProcessingResult process_centred(const SurfaceMesh& input, const ProcessingOptions& options,
                                  const Reporter& reporter) {
   if (options.rings < 1) throw Error("--rings must be at least 1");
   for (double t0 : options.t0) {
@@ -123,7 +157,11 @@ ProcessingResult process_surface(const SurfaceMesh& input, const ProcessingOptio
     improve_and_flip(" cleanup " + std::to_string(round + 1), improve.sweeps,
                      options.cleanup_worklist);
   }
+  // The steps above can, rarely, push one sheet through a close neighbour (issue 18:
+  // TetGen refused fas2 at B = -2); undo that locally.
+  timer.run("untangle", [&] { untangle(result.mesh, input, result.provenance); });
   return result;
 }
 
+}  // namespace
 }  // namespace molmesh

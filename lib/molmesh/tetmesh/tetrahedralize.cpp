@@ -18,12 +18,20 @@
 #include "molmesh/geometry/predicates.hpp"
 #include "molmesh/geometry/tetrahedron.hpp"
 #include "molmesh/geometry/winding_number.hpp"
+#include "molmesh/processing/self_intersection.hpp"
 #include "molmesh/tetmesh/markers.hpp"
 #include "molmesh/tetmesh/molecule_size.hpp"
 #include "molmesh/tetmesh/outer_sphere.hpp"
 
 namespace molmesh {
+namespace detail {
+void link_tetgen_terminate_override();  // tetgen_terminate.cpp
+}
 namespace {
+
+// What a tetrahedron costs in TetGen's pools, its output arrays and our TetMesh (measured
+// order of magnitude, generous), for the memory estimate below.
+constexpr double kBytesPerTetrahedron = 400.0;
 
 using Clock = std::chrono::steady_clock;
 
@@ -83,10 +91,35 @@ std::string tetgen_error_message(int code) {
   }
 }
 
-void check_closed(const SurfaceMesh& s) {
-  std::unordered_map<std::uint64_t, int> uses;
-  uses.reserve(s.triangles.size() * 2);
+std::string format_number(double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.6g", v);
+  return buf;
+}
+
+std::string format_point(const Vec3& p) {
+  char buf[96];
+  std::snprintf(buf, sizeof buf, "(%.6g, %.6g, %.6g)", p.x(), p.y(), p.z());
+  return buf;
+}
+
+// TetGen's input must be a valid PLC: TetGen 1.5 detects some defects (self-intersections)
+// only deep inside its run, others (near-duplicate vertices, a non-manifold edge) it may
+// mesh wrongly or crash on. So the surface is checked here, with messages that name the
+// defect and where it is. Order: cheap combinatorial checks first.
+void validate_plc(const SurfaceMesh& s) {
   const int n = static_cast<int>(s.points.size());
+  for (std::size_t v = 0; v < s.points.size(); ++v)
+    if (!s.points[v].allFinite())
+      throw Error("surface vertex " + std::to_string(v) + " has a non-finite coordinate");
+  // Directed edge (a -> b) uses: a closed, manifold, consistently oriented surface has each
+  // directed edge exactly once and its reverse exactly once.
+  std::unordered_map<std::uint64_t, int> directed;
+  directed.reserve(s.triangles.size() * 4);
+  auto key = [](int a, int b) {
+    return static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32 |
+           static_cast<std::uint32_t>(b);
+  };
   for (const auto& t : s.triangles) {
     for (int k = 0; k < 3; ++k) {
       const int a = t[k], b = t[(k + 1) % 3];
@@ -94,18 +127,94 @@ void check_closed(const SurfaceMesh& s) {
         throw Error("surface triangle refers to vertex " + std::to_string(a) + " of " +
                     std::to_string(n));
       if (a == b) throw Error("surface has a degenerate triangle (repeated vertex)");
-      const auto lo = static_cast<std::uint64_t>(std::min(a, b));
-      const auto hi = static_cast<std::uint64_t>(std::max(a, b));
-      ++uses[lo << 32 | hi];
+      ++directed[key(a, b)];
     }
   }
-  std::size_t open = 0;
-  for (const auto& [edge, count] : uses)
-    if (count % 2 != 0) ++open;
+  std::size_t open = 0, non_manifold = 0, misoriented = 0;
+  Vec3 example = Vec3::Zero();
+  bool have_example = false;
+  for (const auto& [edge, count] : directed) {
+    const int a = static_cast<int>(edge >> 32), b = static_cast<int>(edge & 0xffffffffu);
+    const auto reverse = directed.find(key(b, a));
+    const int back = reverse == directed.end() ? 0 : reverse->second;
+    const bool bad = count > 1 || back == 0 || back > 1;
+    if (count > 1 && back > 0)
+      ++non_manifold;
+    else if (count > 1)
+      ++misoriented;
+    else if (back == 0)
+      ++open;
+    else if (back > 1)
+      ++non_manifold;
+    if (bad && !have_example) {
+      example = (s.points[a] + s.points[b]) / 2.0;
+      have_example = true;
+    }
+  }
   if (open > 0)
     throw Error("the molecular surface is not closed (" + std::to_string(open) +
-                " edges belong to an odd number of triangles); a tetrahedral mesh needs a "
-                "watertight surface");
+                " edges with a single triangle, e.g. at " + format_point(example) +
+                "); a tetrahedral mesh needs a watertight surface");
+  if (non_manifold > 0 || misoriented > 0)
+    throw Error("the molecular surface is not a manifold consistently oriented surface (" +
+                std::to_string(non_manifold + misoriented) +
+                " edges shared by more than two triangles or used twice in one direction, "
+                "e.g. at " +
+                format_point(example) + "); repair it (molmesh improve) before meshing");
+
+  // Near-duplicate vertices: TetGen merges or rejects points closer than its tolerance
+  // (relative to the bounding box), which breaks facets that use both.
+  Vec3 lo = s.points.front(), hi = s.points.front();
+  for (const auto& p : s.points) {
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  }
+  const double tolerance = 1e-9 * (hi - lo).norm();
+  if (tolerance > 0.0) {
+    // Hash grid of cell size `tolerance`: a close pair lies in neighbouring cells. Cell
+    // coordinates stay below ~1e9 since the tolerance is 1e-9 of the box diagonal.
+    using Cell = std::array<std::int64_t, 3>;
+    struct CellHash {
+      std::size_t operator()(const Cell& c) const {
+        std::uint64_t h = static_cast<std::uint64_t>(c[0]);
+        h = h * 0x9E3779B97F4A7C15ull ^ static_cast<std::uint64_t>(c[1]);
+        h = h * 0x9E3779B97F4A7C15ull ^ static_cast<std::uint64_t>(c[2]);
+        return static_cast<std::size_t>(h ^ (h >> 31));
+      }
+    };
+    std::unordered_map<Cell, std::vector<int>, CellHash> cells;
+    cells.reserve(s.points.size());
+    auto cell_of = [&](const Vec3& p) {
+      const Vec3 c = (p - lo) / tolerance;
+      return Cell{static_cast<std::int64_t>(c.x()), static_cast<std::int64_t>(c.y()),
+                  static_cast<std::int64_t>(c.z())};
+    };
+    for (int i = 0; i < n; ++i) {
+      const Vec3& p = s.points[static_cast<std::size_t>(i)];
+      const Cell c = cell_of(p);
+      for (int dz = -1; dz <= 1; ++dz)
+        for (int dy = -1; dy <= 1; ++dy)
+          for (int dx = -1; dx <= 1; ++dx) {
+            const auto it = cells.find({c[0] + dx, c[1] + dy, c[2] + dz});
+            if (it == cells.end()) continue;
+            for (int j : it->second)
+              if ((s.points[static_cast<std::size_t>(j)] - p).norm() <= tolerance)
+                throw Error("surface vertices " + std::to_string(j) + " and " + std::to_string(i) +
+                            " coincide (closer than " + format_number(tolerance) + " Å) at " +
+                            format_point(p) + "; merge them (molmesh improve) before meshing");
+          }
+      cells[c].push_back(i);
+    }
+  }
+
+  const auto crossings = self_intersections(s);
+  if (!crossings.empty()) {
+    const Triangle& t = s.triangles[static_cast<std::size_t>(crossings.front().first)];
+    throw Error("the molecular surface intersects itself (" + std::to_string(crossings.size()) +
+                " crossing triangle pairs, e.g. near " +
+                format_point((s.points[t[0]] + s.points[t[1]] + s.points[t[2]]) / 3.0) +
+                "); TetGen needs a surface that bounds a solid");
+  }
 }
 
 // Mean length of the edges at each vertex: the local mesh size the surface already has.
@@ -126,23 +235,44 @@ std::vector<double> mean_edge_lengths(const SurfaceMesh& s) {
   return sum;
 }
 
-std::string format_number(double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.6g", v);
-  return buf;
-}
-
 }  // namespace
 
-TetMesh tetrahedralize(const SurfaceMesh& surface, const Atoms& atoms,
-                       const TetMeshOptions& options, const Reporter& reporter,
-                       TetMeshReport* report_out) {
+void TetMeshOptions::validate() const {
+  auto require = [](bool ok, const std::string& what) {
+    if (!ok) throw Error(what);
+  };
+  require(std::isfinite(sphere_ratio) && sphere_ratio > 0.0 && sphere_ratio <= 1e4,
+          "the sphere ratio (--sphere-ratio) must be a finite number in (0, 10000]");
+  if (outer_radius)
+    require(std::isfinite(*outer_radius) && *outer_radius > 0.0 && *outer_radius <= kMaxOuterRadius,
+            "the outer sphere radius (--outer-radius) must be a finite number in (0, " +
+                format_number(kMaxOuterRadius) + "] Å");
+  require(outer_sphere_subdivisions >= 0 && outer_sphere_subdivisions <= 7,
+          "the outer sphere subdivision level must be 0..7");
+  require(std::isfinite(max_radius_edge_ratio) && max_radius_edge_ratio >= 1.0 &&
+              max_radius_edge_ratio <= 1e3,
+          "the radius-edge bound (--max-radius-edge) must be a finite number in [1, 1000] "
+          "(TetGen may not terminate below 1)");
+  require(std::isfinite(min_dihedral_deg) && min_dihedral_deg >= 0.0 && min_dihedral_deg <= 70.0,
+          "the minimum dihedral angle (--min-dihedral) must be a finite number in [0, 70] degrees");
+  if (max_volume)
+    require(std::isfinite(*max_volume) && *max_volume > 0.0,
+            "the maximum tetrahedron volume (--max-volume) must be a finite positive number");
+  require(std::isfinite(size_factor) && size_factor >= 0.0 && size_factor <= 1e3,
+          "the size factor (--size-factor) must be a finite number in [0, 1000] (0: no grading)");
+  require(std::isfinite(max_memory_bytes) && max_memory_bytes > 0.0,
+          "the memory limit (--max-memory) must be positive");
+  for (const auto& s : active_site)
+    require(s.center.allFinite() && std::isfinite(s.radius) && s.radius >= 0.0,
+            "an active-site sphere has a non-finite centre or radius");
+}
+
+// tetrahedralize() in a frame centred on the molecule (see there).
+static TetMesh tetrahedralize_centred(const SurfaceMesh& surface, const Atoms& atoms,
+                                      const TetMeshOptions& options, const Reporter& reporter,
+                                      TetMeshReport* report_out) {
   const auto t_start = Clock::now();
   TetMeshReport report;
-  if (surface.triangles.empty() || surface.points.empty())
-    throw Error("cannot tetrahedralize an empty surface");
-  check_closed(surface);
-  reporter.progress("tetrahedralize", 0.0);
 
   const bool want_interior = options.domain != Domain::exterior;
   const bool want_exterior = options.domain != Domain::interior;
@@ -214,7 +344,6 @@ TetMesh tetrahedralize(const SurfaceMesh& surface, const Atoms& atoms,
     in.facetmarkerlist[f] = marker;
   }
 
-  if (options.size_factor < 0.0) throw Error("the size factor must be positive (0: no grading)");
   const bool graded = options.size_factor > 0.0 && options.tetgen_switches.empty();
   std::vector<double> input_sizes;
   if (graded) {
@@ -222,6 +351,18 @@ TetMesh tetrahedralize(const SurfaceMesh& surface, const Atoms& atoms,
     const std::vector<double> sphere_sizes = mean_edge_lengths(sphere);
     input_sizes.insert(input_sizes.end(), sphere_sizes.begin(), sphere_sizes.end());
     for (double& h : input_sizes) h *= options.size_factor;
+    // The molecule's interior alone needs about volume / (h^3 / 8.5) tetrahedra of edge h
+    // (a regular tetrahedron has volume h^3 / 8.49): a lower bound on the mesh, checked
+    // against the memory limit before TetGen allocates (--size-factor 1e-3 ran for minutes).
+    double h_mean = 0.0;
+    for (int i = 0; i < n_surface; ++i) h_mean += input_sizes[static_cast<std::size_t>(i)];
+    h_mean /= n_surface;
+    const double tetrahedra = std::abs(enclosed_volume(surface.points, surface.triangles)) * 8.49 /
+                              (h_mean * h_mean * h_mean);
+    check_memory(tetrahedra * kBytesPerTetrahedron, options.max_memory_bytes,
+                 "the tetrahedral mesh (about " + format_number(tetrahedra) +
+                     " tetrahedra at --size-factor " + format_number(options.size_factor) + ")",
+                 "raise --size-factor");
   }
 
   // Atom centres become nodes of the molecule's part. They go into the PLC as isolated
@@ -283,12 +424,25 @@ TetMesh tetrahedralize(const SurfaceMesh& surface, const Atoms& atoms,
     if (switches.find(c) == std::string::npos) switches += c;
   report.tetgen_switches = switches;
 
+  if (options.max_volume && options.tetgen_switches.empty()) {
+    // Every tetrahedron is at most max_volume, so the domain needs at least volume / bound.
+    const double domain_volume =
+        want_exterior ? 4.0 / 3.0 * std::numbers::pi * std::pow(report.outer_radius, 3)
+                      : std::abs(enclosed_volume(surface.points, surface.triangles));
+    const double tetrahedra = domain_volume / *options.max_volume;
+    check_memory(tetrahedra * kBytesPerTetrahedron, options.max_memory_bytes,
+                 "the tetrahedral mesh (at least " + format_number(tetrahedra) +
+                     " tetrahedra at --max-volume " + format_number(*options.max_volume) + ")",
+                 "raise --max-volume");
+  }
+
   tetgenbehavior behavior;
   std::string switch_buffer = switches;
   if (!behavior.parse_commandline(switch_buffer.data()))
     throw Error("TetGen rejected the switches \"" + switches + "\"");
   tetgenio out;
   const auto t_tetgen = Clock::now();
+  detail::link_tetgen_terminate_override();
   try {
     ::tetrahedralize(&behavior, &in, &out, nullptr, nullptr);
   } catch (int code) {
@@ -452,6 +606,34 @@ TetMesh tetrahedralize(const SurfaceMesh& surface, const Atoms& atoms,
   report.total_seconds = seconds_since(t_start);
   reporter.progress("tetrahedralize", 1.0);
   if (report_out) *report_out = report;
+  return mesh;
+}
+
+TetMesh tetrahedralize(const SurfaceMesh& surface, const Atoms& atoms,
+                       const TetMeshOptions& options, const Reporter& reporter,
+                       TetMeshReport* report_out) {
+  if (surface.triangles.empty() || surface.points.empty())
+    throw Error("cannot tetrahedralize an empty surface");
+  validate_plc(surface);
+  options.validate();
+  for (const auto& a : atoms)
+    if (!a.center.allFinite()) throw Error("an atom has a non-finite position");
+  reporter.progress("tetrahedralize", 0.0);
+
+  // Local frame: TetGen's tolerances and our exact point matching work best with
+  // coordinates near the origin, and the mesh must not depend on where the molecule sits
+  // (issue 18: far from the origin results degraded). Shift to the molecule's centre,
+  // mesh, shift back.
+  const Vec3 centre =
+      (atoms.empty() ? molecule_extent(surface.points) : molecule_extent(atoms)).centroid;
+  SurfaceMesh local = surface;
+  for (auto& p : local.points) p -= centre;
+  Atoms local_atoms = atoms;
+  for (auto& a : local_atoms) a.center -= centre;
+  TetMeshOptions local_options = options;
+  for (auto& sphere : local_options.active_site) sphere.center -= centre;
+  TetMesh mesh = tetrahedralize_centred(local, local_atoms, local_options, reporter, report_out);
+  for (auto& p : mesh.points) p += centre;
   return mesh;
 }
 

@@ -11,12 +11,18 @@
 #include "molmesh/atoms/atom.hpp"
 #include "molmesh/core/geometry.hpp"
 #include "molmesh/core/reporter.hpp"
+#include "molmesh/core/resource_limits.hpp"
 #include "molmesh/surface/surface_mesh.hpp"
 #include "molmesh/tetmesh/tet_mesh.hpp"
 
 namespace molmesh {
 
 enum class Domain { interior, exterior, full };
+
+// Largest outer sphere radius (Å): far enough for any molecule's far field (the default is
+// 40 x the molecule size); beyond, TetGen's predicates lose the molecule against the sphere
+// (--outer-radius 1e300 aborted in a TetGen assertion).
+inline constexpr double kMaxOuterRadius = 1e6;
 
 struct TetMeshOptions {
   Domain domain = Domain::full;
@@ -45,6 +51,13 @@ struct TetMeshOptions {
   // always added so TetGen stays silent). Must keep the meaning of the result a PLC mesh
   // with region attributes, e.g. "pq1.5/15YA".
   std::string tetgen_switches;
+  // Memory TetGen may use, in bytes: a request whose estimated mesh (about 400 bytes per
+  // tetrahedron) needs more is refused before TetGen runs (core/resource_limits.hpp).
+  double max_memory_bytes = default_memory_limit();
+
+  // Throws Error naming the option when a value is NaN, infinite or outside the range
+  // molmesh supports (docs/tetmesh.md, "Limits"); tetrahedralize() calls it first.
+  void validate() const;
 };
 
 struct TetMeshReport {

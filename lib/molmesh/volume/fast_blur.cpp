@@ -192,16 +192,17 @@ Grid fast_blur(const Atoms& atoms, const BlurOptions& options, SplatMethod splat
   for (int attempt = 0;; ++attempt) {
     Grid grid;
     grid.spacing = Vec3::Constant(h);
+    std::array<double, 3> extent{};
     for (int axis = 0; axis < 3; ++axis) {
       // The same lattice as blur_atoms (origin on multiples of h), so both can be compared
       // sample by sample.
       const double first = std::floor(lo[axis] / h) - margin;
       const double last = std::ceil(hi[axis] / h) + margin;
-      if (last - first + 1 > 1e6)
-        throw Error("the grid would be absurdly large; check coordinates");
+      extent[axis] = last - first + 1;
       grid.origin[axis] = first * h;
-      grid.dims[axis] = static_cast<int>(last - first) + 1;
     }
+    check_grid_memory(extent, h, options.max_memory_bytes);
+    for (int axis = 0; axis < 3; ++axis) grid.dims[axis] = static_cast<int>(extent[axis]);
     const double samples = double(grid.dims[0]) * grid.dims[1] * grid.dims[2];
     if (samples > double(std::numeric_limits<std::int32_t>::max()) / 4) {
       throw Error("the grid of " + std::to_string(grid.dims[0]) + " x " +

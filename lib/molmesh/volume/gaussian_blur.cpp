@@ -7,6 +7,7 @@
 #include <atomic>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <limits>
 #include <mutex>
 #include <new>
@@ -41,6 +42,12 @@ struct Box {
 std::string grid_size_text(const std::array<int, 3>& dims) {
   return std::to_string(dims[0]) + " x " + std::to_string(dims[1]) + " x " +
          std::to_string(dims[2]);
+}
+
+std::string format_extent(const std::array<double, 3>& extent) {
+  char buf[96];
+  std::snprintf(buf, sizeof buf, "%.0f x %.0f x %.0f", extent[0], extent[1], extent[2]);
+  return buf;
 }
 
 // Samples the blurred field on the grid `grid` (origin, spacing, dims already set).
@@ -150,6 +157,14 @@ bool boundary_reaches(const Grid& grid, double isovalue) {
 
 }  // namespace
 
+void check_grid_memory(const std::array<double, 3>& extent, double h, double max_memory_bytes) {
+  char spacing[32];
+  std::snprintf(spacing, sizeof spacing, "%g", h);
+  check_memory(extent[0] * extent[1] * extent[2] * sizeof(double), max_memory_bytes,
+               "the grid of " + format_extent(extent) + " samples (spacing " + spacing + " Å)",
+               "use a coarser --spacing, or check the coordinates (atoms far apart)");
+}
+
 Grid blur_atoms(const Atoms& atoms, const BlurOptions& options, const Reporter& reporter) {
   const double h = options.spacing;
   if (!(h > 0.0) || !std::isfinite(h))
@@ -189,15 +204,17 @@ Grid blur_atoms(const Atoms& atoms, const BlurOptions& options, const Reporter& 
   for (int attempt = 0;; ++attempt) {
     Grid grid;
     grid.spacing = Vec3::Constant(h);
+    std::array<double, 3> extent{};
     for (int axis = 0; axis < 3; ++axis) {
       // Origins on multiples of the spacing: translating the molecule by whole cells
       // translates the samples exactly.
       const double lo = std::floor(box.lo[axis] / h) - margin;
       const double hi = std::ceil(box.hi[axis] / h) + margin;
-      if (hi - lo + 1 > 1e6) throw Error("the grid would be absurdly large; check coordinates");
+      extent[axis] = hi - lo + 1;
       grid.origin[axis] = lo * h;
-      grid.dims[axis] = static_cast<int>(hi - lo) + 1;
     }
+    check_grid_memory(extent, h, options.max_memory_bytes);
+    for (int axis = 0; axis < 3; ++axis) grid.dims[axis] = static_cast<int>(extent[axis]);
     const double samples = double(grid.dims[0]) * grid.dims[1] * grid.dims[2];
     if (samples > double(std::numeric_limits<std::int32_t>::max()) / 4)
       throw Error("the grid of " + grid_size_text(grid.dims) +

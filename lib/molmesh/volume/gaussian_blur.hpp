@@ -3,8 +3,11 @@
 // regular grid that encloses the isosurface F = isovalue with a margin. F is large inside
 // the molecule and decreases outward. Decisions (cutoff, error bound, margin) are in
 // docs/surface.md.
+#include <array>
+
 #include "molmesh/atoms/atom.hpp"
 #include "molmesh/core/reporter.hpp"
+#include "molmesh/core/resource_limits.hpp"
 #include "molmesh/volume/grid.hpp"
 
 namespace molmesh {
@@ -20,7 +23,14 @@ struct BlurOptions {
   // isovalue. The grid is enlarged automatically if the blurred field still reaches the
   // isovalue on its boundary (many overlapping tails), so the surface is always closed.
   int margin_cells = 3;
+  // Bytes the grid may take (8 per sample); a larger grid is refused before it is
+  // allocated, with the size it would need (core/resource_limits.hpp).
+  double max_memory_bytes = default_memory_limit();
 };
+
+// Throws Error (needed memory, the limit, "use a coarser --spacing") when a grid of
+// extent[0] x extent[1] x extent[2] samples of spacing h needs more than max_memory_bytes.
+void check_grid_memory(const std::array<double, 3>& extent, double h, double max_memory_bytes);
 
 // Atoms with zero radius add nothing. Throws Error for non-negative blobbyness, a
 // non-positive spacing/isovalue/truncation, no atom with a positive radius, or a grid too

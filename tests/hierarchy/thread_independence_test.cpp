@@ -1,0 +1,67 @@
+// Results never depend on the thread count (issue 18 floor): the processed surface, the
+// tetrahedral mesh and every dataset of a hierarchy file are identical with 1 and 2 threads.
+#include <gtest/gtest.h>
+#include <tbb/global_control.h>
+
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <string>
+
+#include "molmesh/hierarchy/build_hierarchy.hpp"
+#include "molmesh/io/hierarchy_hdf5.hpp"
+#include "molmesh/io/read_atoms.hpp"
+#include "molmesh/pipeline/surface_pipeline.hpp"
+#include "molmesh/tetmesh/tetrahedralize.hpp"
+
+namespace molmesh {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Outputs {
+  SurfaceMesh surface;
+  TetMesh volume;
+  Hierarchy hierarchy;
+};
+
+Outputs run_with(int threads) {
+  const tbb::global_control limit(tbb::global_control::max_allowed_parallelism,
+                                  static_cast<std::size_t>(threads));
+  const Atoms atoms = read_atoms(std::string(MOLMESH_TEST_DATA_DIR) + "/1a1p.pqr");
+  Outputs r;
+  r.surface = surface_from_atoms(atoms, {}).surface;
+  r.volume = tetrahedralize(r.surface, atoms, {});
+  SurfacePipelineOptions raw;
+  raw.raw = true;
+  HierarchyOptions options;
+  options.t0 = {0.2, 0.4};
+  r.hierarchy = build_hierarchy(surface_from_atoms(atoms, raw).surface, atoms, options);
+  return r;
+}
+
+std::string bytes_of(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+TEST(ThreadIndependence, SurfaceTetmeshAndHierarchyAreIdenticalWithOneAndTwoThreads) {
+  const Outputs one = run_with(1);
+  const Outputs two = run_with(2);
+  EXPECT_EQ(one.surface.points, two.surface.points);
+  EXPECT_EQ(one.surface.triangles, two.surface.triangles);
+  EXPECT_EQ(one.volume.points, two.volume.points);
+  EXPECT_EQ(one.volume.tetrahedra, two.volume.tetrahedra);
+  EXPECT_EQ(one.volume.cell_markers, two.volume.cell_markers);
+  EXPECT_EQ(one.volume.boundary_faces, two.volume.boundary_faces);
+  // Every HDF5 dataset (the files hold no timestamps): byte-identical files.
+  const auto dir = fs::temp_directory_path() / ("molmesh_threads_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  write_hierarchy(dir / "one.h5", one.hierarchy);
+  write_hierarchy(dir / "two.h5", two.hierarchy);
+  EXPECT_EQ(bytes_of(dir / "one.h5"), bytes_of(dir / "two.h5"));
+  fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace molmesh

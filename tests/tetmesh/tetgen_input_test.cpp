@@ -1,0 +1,170 @@
+// TetGen never takes the process down (issue 18): its input is validated first (closed,
+// manifold, no near-duplicate vertices, no self-intersection, sane option values), and an
+// error TetGen raises itself becomes a molmesh::Error instead of a crash.
+#include <gtest/gtest.h>
+#include <tetgen.h>
+
+#include <string>
+
+#include "molmesh/core/error.hpp"
+#include "molmesh/tetmesh/outer_sphere.hpp"
+#include "molmesh/tetmesh/tetrahedralize.hpp"
+#include "support/cli_exit.hpp"
+
+namespace molmesh {
+namespace {
+
+std::string error_of(const SurfaceMesh& s, const TetMeshOptions& o = {}) {
+  try {
+    tetrahedralize(s, {}, o);
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TetMeshOptions interior() {
+  TetMeshOptions o;
+  o.domain = Domain::interior;
+  return o;
+}
+
+// Appends an axis-aligned box [lo, hi] (outward triangles) to `s`.
+void add_box(SurfaceMesh& s, const Vec3& lo, const Vec3& hi) {
+  const int base = static_cast<int>(s.points.size());
+  for (int k = 0; k < 8; ++k)
+    s.points.push_back(
+        Vec3(k & 1 ? hi.x() : lo.x(), k & 2 ? hi.y() : lo.y(), k & 4 ? hi.z() : lo.z()));
+  const int quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4},
+                           {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+  for (const auto& q : quads) {
+    s.triangles.push_back({base + q[0], base + q[1], base + q[2]});
+    s.triangles.push_back({base + q[0], base + q[2], base + q[3]});
+  }
+}
+
+TEST(TetgenInput, ValidBoxMeshes) {
+  SurfaceMesh box;
+  add_box(box, Vec3(0, 0, 0), Vec3(1, 1, 1));
+  EXPECT_EQ(error_of(box, interior()), "");
+}
+
+TEST(TetgenInput, NonManifoldEdgeIsRefused) {
+  // Two boxes sharing one edge: that edge has four triangles.
+  SurfaceMesh s;
+  add_box(s, Vec3(0, 0, 0), Vec3(1, 1, 1));
+  add_box(s, Vec3(1, 1, 0), Vec3(2, 2, 1));
+  // Weld the shared edge (x = y = 1) of the second box onto the first's vertices.
+  for (auto& t : s.triangles)
+    for (int& v : t) {
+      if (v == 8)
+        v = 3;  // (1,1,0)
+      else if (v == 12)
+        v = 7;  // (1,1,1)
+    }
+  EXPECT_NE(error_of(s, interior()).find("manifold"), std::string::npos) << error_of(s, interior());
+}
+
+TEST(TetgenInput, NearDuplicateVerticesAreRefused) {
+  SurfaceMesh s;
+  add_box(s, Vec3(0, 0, 0), Vec3(1, 1, 1));
+  add_box(s, Vec3(1 + 1e-13, 0, 0), Vec3(2, 1, 1));  // touches the first within 1e-13
+  EXPECT_NE(error_of(s, interior()).find("coincide"), std::string::npos) << error_of(s, interior());
+}
+
+TEST(TetgenInput, SelfIntersectionIsRefused) {
+  SurfaceMesh s;
+  add_box(s, Vec3(0, 0, 0), Vec3(1, 1, 1));
+  add_box(s, Vec3(0.5, 0.5, 0.5), Vec3(1.5, 1.5, 1.5));
+  EXPECT_NE(error_of(s, interior()).find("intersects itself"), std::string::npos)
+      << error_of(s, interior());
+}
+
+TEST(TetgenInput, ErrorsTetgenRaisesAreExceptionsNotCrashes) {
+  // TetGen itself on a PLC that tetrahedralize() would refuse (two boxes cutting through
+  // each other): TetGen throws its error code 3. Before tetgen_terminate.cpp its cleanup
+  // double-freed while unwinding and the process died with SIGSEGV.
+  SurfaceMesh s;
+  add_box(s, Vec3(0, 0, 0), Vec3(1, 1, 1));
+  add_box(s, Vec3(0.5, 0.5, 0.5), Vec3(1.5, 1.5, 1.5));
+  tetgenio in;
+  in.firstnumber = 0;
+  in.numberofpoints = static_cast<int>(s.points.size());
+  in.pointlist = new REAL[s.points.size() * 3];
+  for (std::size_t i = 0; i < s.points.size(); ++i)
+    for (int d = 0; d < 3; ++d) in.pointlist[3 * i + d] = s.points[i][d];
+  in.numberoffacets = static_cast<int>(s.triangles.size());
+  in.facetlist = new tetgenio::facet[s.triangles.size()];
+  for (std::size_t f = 0; f < s.triangles.size(); ++f) {
+    tetgenio::facet& facet = in.facetlist[f];
+    tetgenio::init(&facet);
+    facet.numberofpolygons = 1;
+    facet.polygonlist = new tetgenio::polygon[1];
+    tetgenio::init(&facet.polygonlist[0]);
+    facet.polygonlist[0].numberofvertices = 3;
+    const Triangle& t = s.triangles[f];
+    facet.polygonlist[0].vertexlist = new int[3]{t[0], t[1], t[2]};
+  }
+  tetgenio out;
+  tetgenbehavior behavior;
+  std::string switches = "pYzQ";
+  ASSERT_TRUE(behavior.parse_commandline(switches.data()));
+  int code = 0;
+  try {
+    ::tetrahedralize(&behavior, &in, &out, nullptr, nullptr);
+  } catch (int thrown) {
+    code = thrown;
+  }
+  EXPECT_NE(code, 0);
+}
+
+TEST(TetgenInput, OptionValuesAreRangeChecked) {
+  const SurfaceMesh ion = icosphere(Vec3::Zero(), 3.0, 1);
+  const double nan = std::nan("");
+  auto with = [](auto change) {
+    TetMeshOptions o;
+    change(o);
+    return o;
+  };
+  for (const TetMeshOptions& o : {with([](TetMeshOptions& o) { o.outer_radius = 1e300; }),
+                                  with([&](TetMeshOptions& o) { o.outer_radius = nan; }),
+                                  with([&](TetMeshOptions& o) { o.min_dihedral_deg = nan; }),
+                                  with([&](TetMeshOptions& o) { o.max_radius_edge_ratio = nan; }),
+                                  with([&](TetMeshOptions& o) { o.sphere_ratio = INFINITY; }),
+                                  with([&](TetMeshOptions& o) { o.size_factor = nan; }),
+                                  with([&](TetMeshOptions& o) { o.max_volume = -1.0; })}) {
+    EXPECT_THROW(o.validate(), Error);
+    EXPECT_THROW(tetrahedralize(ion, {}, o), Error);
+  }
+  EXPECT_NO_THROW(TetMeshOptions{}.validate());
+}
+
+TEST(TetgenInput, TinySizeFactorIsRefusedByTheMemoryEstimate) {
+  // --size-factor 1e-3 on an 86-vertex surface ran for minutes; now refused at once.
+  const SurfaceMesh ion = icosphere(Vec3::Zero(), 3.0, 2);
+  TetMeshOptions o = interior();
+  o.size_factor = 1e-3;
+  const std::string message = error_of(ion, o);
+  EXPECT_NE(message.find("--max-memory"), std::string::npos) << message;
+  EXPECT_NE(message.find("--size-factor"), std::string::npos) << message;
+}
+
+TEST(TetgenInput, CliFas2AtBlobbyness2IsNoCrash) {
+  // The issue's reproducer: TetGen died with SIGSEGV (double free in its cleanup).
+  const auto dir = std::filesystem::temp_directory_path() /
+                   ("molmesh_tetgen_fas2_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  const auto r =
+      test::run_molmesh(std::string("tetmesh ") + MOLMESH_TEST_DATA_DIR +
+                        "/fas2.pqr --blobbyness -2 --domain full -o " + (dir / "f.m").string());
+  EXPECT_EQ(r.signal, 0) << r.err;
+  EXPECT_TRUE(r.code == 0 || r.code == 1) << r.code << " " << r.err;
+  if (r.code != 0) {
+    EXPECT_NE(r.err.find("molmesh: error:"), std::string::npos) << r.err;
+    EXPECT_FALSE(std::filesystem::exists(dir / "f.m"));
+  }
+  std::filesystem::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace molmesh
