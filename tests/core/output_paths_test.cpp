@@ -171,17 +171,19 @@ TEST(OutputPaths, InterruptDeletesTheTemporaryBeingWritten) {
 }
 
 TEST(OutputPaths, InterruptDuringHierarchyLeavesNothing) {
-  // The real CLI on fas2, interrupted while it works: it ends by the signal (status 130 in a
-  // shell) and leaves no file.
+  // The real CLI on mAChE (long enough that it is still working after a second on an idle
+  // machine; fas2 can finish first), interrupted while it works: it ends by the signal
+  // (status 130 in a shell) and leaves no file.
   const auto dir = scratch("cli_signal");
   const std::string out = (dir / "h.h5").string();
+  const std::string mache = std::string(MOLMESH_TEST_DATA_DIR) + "/mache.pqr";
   const pid_t child = ::fork();
   if (child == 0) {
-    ::execl(MOLMESH_CLI_PATH, "molmesh", "-q", "hierarchy", kFas2.c_str(), "--t0", "0.1,0.3", "-o",
+    ::execl(MOLMESH_CLI_PATH, "molmesh", "-q", "hierarchy", mache.c_str(), "--t0", "0.1,0.3", "-o",
             out.c_str(), static_cast<char*>(nullptr));
     ::_exit(127);
   }
-  std::this_thread::sleep_for(std::chrono::seconds(2));
+  std::this_thread::sleep_for(std::chrono::seconds(1));
   ::kill(child, SIGINT);
   int status = 0;
   ::waitpid(child, &status, 0);

@@ -23,8 +23,10 @@ Atoms two_atoms(const Vec3& at) {
 double relative(double a, double b) { return std::abs(a - b) / std::abs(b); }
 
 TEST(FarFromOrigin, ProcessedSurfaceAndTetMeshDoNotDependOnPosition) {
-  const Vec3 far(1e7, 1e7, 1e7);
-  const SurfacePipelineResult near_result = surface_from_atoms(two_atoms(Vec3::Zero()), {});
+  // Both pairs are centred on a multiple of the grid spacing (the origin and 1e7 per axis), so
+  // the far pair's local frame puts its atoms exactly where the near pair's are.
+  const Vec3 far(1e7 - 1.0, 1e7, 1e7);
+  const SurfacePipelineResult near_result = surface_from_atoms(two_atoms(Vec3(-1.0, 0.0, 0.0)), {});
   const SurfacePipelineResult far_result = surface_from_atoms(two_atoms(far), {});
   const SurfaceStats a = compute_surface_stats(near_result.surface);
   const SurfaceStats b = compute_surface_stats(far_result.surface);
@@ -50,7 +52,7 @@ TEST(FarFromOrigin, ProcessedSurfaceAndTetMeshDoNotDependOnPosition) {
   TetMeshOptions tet;
   tet.domain = Domain::interior;
   const TetStats ta =
-      compute_tet_stats(tetrahedralize(near_result.surface, two_atoms(Vec3::Zero()), tet));
+      compute_tet_stats(tetrahedralize(near_result.surface, two_atoms(Vec3(-1.0, 0.0, 0.0)), tet));
   const TetStats tb = compute_tet_stats(tetrahedralize(far_result.surface, two_atoms(far), tet));
   EXPECT_EQ(ta.tetrahedra, tb.tetrahedra);
   EXPECT_NEAR(ta.min_dihedral_deg, tb.min_dihedral_deg, 1e-3);

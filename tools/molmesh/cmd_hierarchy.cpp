@@ -19,8 +19,8 @@
 #include "molmesh/io/sha256.hpp"
 #include "molmesh/io/sphere_list.hpp"
 #include "molmesh/pipeline/surface_pipeline.hpp"
-#include "surface_options.hpp"
 #include "option_checks.hpp"
+#include "surface_options.hpp"
 
 namespace molmesh::cli {
 namespace {
