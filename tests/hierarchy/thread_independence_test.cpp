@@ -54,7 +54,29 @@ TEST(ThreadIndependence, SurfaceTetmeshAndHierarchyAreIdenticalWithOneAndTwoThre
   EXPECT_EQ(one.volume.tetrahedra, two.volume.tetrahedra);
   EXPECT_EQ(one.volume.cell_markers, two.volume.cell_markers);
   EXPECT_EQ(one.volume.boundary_faces, two.volume.boundary_faces);
-  // Every HDF5 dataset (the files hold no timestamps): byte-identical files.
+  // Level by level first, so a failure says where the two runs part.
+  ASSERT_EQ(one.hierarchy.levels.size(), two.hierarchy.levels.size());
+  for (std::size_t L = 0; L < one.hierarchy.levels.size(); ++L) {
+    const HierarchyLevel& a = one.hierarchy.levels[L];
+    const HierarchyLevel& b = two.hierarchy.levels[L];
+    EXPECT_EQ(a.surface.points, b.surface.points) << "level " << L;
+    EXPECT_EQ(a.surface.triangles, b.surface.triangles) << "level " << L;
+    EXPECT_EQ(a.surface_provenance, b.surface_provenance) << "level " << L;
+    EXPECT_EQ(a.volume.points, b.volume.points) << "level " << L;
+    EXPECT_EQ(a.volume.tetrahedra, b.volume.tetrahedra) << "level " << L;
+    EXPECT_EQ(a.volume_permutation, b.volume_permutation) << "level " << L;
+  }
+  for (std::size_t i = 0; i < one.hierarchy.transfers.size(); ++i) {
+    const LevelTransfer& a = one.hierarchy.transfers[i];
+    const LevelTransfer& b = two.hierarchy.transfers[i];
+    EXPECT_TRUE(a.volume.isApprox(b.volume, 0.0) && a.volume.nonZeros() == b.volume.nonZeros())
+        << "volume transfer " << i;
+    EXPECT_TRUE(a.surface.isApprox(b.surface, 0.0) &&
+                a.surface.nonZeros() == b.surface.nonZeros())
+        << "surface transfer " << i;
+  }
+  // Every HDF5 dataset: byte-identical files (the writer stores no object times, so this
+  // holds across a clock-second boundary too).
   const auto dir = fs::temp_directory_path() / ("molmesh_threads_" + std::to_string(::getpid()));
   fs::create_directories(dir);
   write_hierarchy(dir / "one.h5", one.hierarchy);

@@ -91,7 +91,9 @@ bool link_exists(hid_t loc, const std::string& path) {
 Handle create_group(hid_t loc, const std::string& path) {
   Handle lcpl(H5Pcreate(H5P_LINK_CREATE), H5Pclose, "property list");
   check(H5Pset_create_intermediate_group(lcpl.get(), 1), "intermediate groups");
-  return Handle(H5Gcreate2(loc, path.c_str(), lcpl.get(), H5P_DEFAULT, H5P_DEFAULT), H5Gclose,
+  Handle gcpl(H5Pcreate(H5P_GROUP_CREATE), H5Pclose, "property list");
+  check(H5Pset_obj_track_times(gcpl.get(), 0), "object times");
+  return Handle(H5Gcreate2(loc, path.c_str(), lcpl.get(), gcpl.get(), H5P_DEFAULT), H5Gclose,
                 "cannot create group " + path);
 }
 
@@ -122,6 +124,9 @@ void write_dataset(hid_t loc, const std::string& name, const T* data, std::size_
   const hsize_t dims[2] = {rows, cols};
   Handle space(H5Screate_simple(rank, dims, nullptr), H5Sclose, "dataspace for " + name);
   Handle dcpl(H5Pcreate(H5P_DATASET_CREATE), H5Pclose, "property list");
+  // No modification times in the object headers: the same hierarchy gives the same bytes,
+  // whenever and with however many threads it was built (tests/hierarchy/thread_independence).
+  check(H5Pset_obj_track_times(dcpl.get(), 0), "object times");
   if (rows > 0) {
     const hsize_t chunk_rows = std::min<hsize_t>(rows, cols == 0 ? 65536 : 16384);
     const hsize_t chunk[2] = {chunk_rows, cols};
