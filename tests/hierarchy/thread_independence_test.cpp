@@ -71,8 +71,7 @@ TEST(ThreadIndependence, SurfaceTetmeshAndHierarchyAreIdenticalWithOneAndTwoThre
     const LevelTransfer& b = two.hierarchy.transfers[i];
     EXPECT_TRUE(a.volume.isApprox(b.volume, 0.0) && a.volume.nonZeros() == b.volume.nonZeros())
         << "volume transfer " << i;
-    EXPECT_TRUE(a.surface.isApprox(b.surface, 0.0) &&
-                a.surface.nonZeros() == b.surface.nonZeros())
+    EXPECT_TRUE(a.surface.isApprox(b.surface, 0.0) && a.surface.nonZeros() == b.surface.nonZeros())
         << "surface transfer " << i;
   }
   // Every HDF5 dataset: byte-identical files (the writer stores no object times, so this
