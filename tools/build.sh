@@ -45,7 +45,7 @@ sanitize() {
     -DCMAKE_C_FLAGS_RELWITHDEBINFO="$flags" -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="$flags" \
     -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" \
     -DCMAKE_SHARED_LINKER_FLAGS="-fsanitize=address,undefined" \
-    -DMOLMESH_BUILD_BENCHMARKS=OFF -DMOLMESH_FUZZ=ON
+    -DMOLMESH_BUILD_BENCHMARKS=OFF -DMOLMESH_BUILD_PYTHON=OFF -DMOLMESH_FUZZ=ON
   cmake --build "$dir" -j "$jobs"
   local start=$SECONDS
   (
