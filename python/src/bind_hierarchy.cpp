@@ -136,8 +136,9 @@ void bind_hierarchy(py::module_& m) {
 
   const std::string doc =
       "hierarchy(input, atoms=None, *, progress=None, **options) -> Hierarchy\n\n"
-      "The `molmesh hierarchy` stage: Atoms are blurred and contoured (raw; the blurring "
-      "options of surface() apply: spacing, blobbyness, isovalue, blur, min_cavity_volume), "
+      "The `molmesh hierarchy` stage: Atoms are blurred and contoured (raw; the volume "
+      "options of surface() apply: surface, probe_radius, keep_on_surface, spacing, "
+      "blobbyness, isovalue, truncation, blur, min_cavity_volume), "
       "or a Surface is taken as given (pass atoms= for interior nodes); then one level per "
       "T0, each with its own surface processing, volume mesh and prolongation. As in the "
       "CLI, active_site spheres are also kept dense by coarsening on every level. Options "
@@ -180,8 +181,10 @@ void bind_hierarchy(py::module_& m) {
           Out o;
           std::shared_ptr<const SurfaceMesh> s = surface;
           if (!s) {
-            s = std::make_shared<const SurfaceMesh>(
-                std::move(surface_from_atoms(*atoms, surface_options, r).surface));
+            SurfacePipelineResult result = surface_from_atoms(*atoms, surface_options, r);
+            // As `molmesh hierarchy`: every level's processing keeps vertices on the surface.
+            if (surface_options.keep_on_surface) options.processing.project = result.projection;
+            s = std::make_shared<const SurfaceMesh>(std::move(result.surface));
           }
           o.hierarchy = std::make_shared<Hierarchy>(
               build_hierarchy(*s, atoms ? *atoms : kNoAtoms, options, r, &o.report));

@@ -44,6 +44,17 @@ bool is_path(const py::handle& v) {
 const OptionTable<SurfacePipelineOptions>& volume_table() {
   static const auto table = [] {
     OptionTable<SurfacePipelineOptions> t;
+    std::vector<std::pair<std::string, SurfaceKind>> kinds;
+    for (SurfaceKind kind : kSurfaceKinds) kinds.emplace_back(surface_kind_name(kind), kind);
+    t.choice("surface", MOLMESH_FIELD(surface), kinds,
+             "which surface of the atoms: the paper's blurred 'gaussian' (blobbyness, "
+             "isovalue), or the solvent-excluded 'ses', solvent-accessible 'sas' or van der "
+             "Waals 'vdw' surface (docs/surface.md)");
+    t.field("probe_radius", MOLMESH_FIELD(probe_radius),
+            "solvent probe radius of the ses and sas surfaces, Å (1.4: water)");
+    t.field("keep_on_surface", MOLMESH_FIELD(keep_on_surface),
+            "ses, sas, vdw: project vertices back onto the surface after every processing "
+            "move (keeps volume, costs angle quality at creases; docs/surface.md)");
     t.field("spacing", MOLMESH_FIELD(blur.spacing),
             "grid spacing of the blurred volume, Å (smaller: finer surface, more memory)");
     t.field("blobbyness", MOLMESH_FIELD(blur.blobbyness),

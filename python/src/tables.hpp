@@ -9,7 +9,8 @@
 
 namespace molmesh::python {
 
-// Blurring and contouring (spacing, blobbyness, isovalue, blur, min_cavity_volume, ...):
+// Surface kind, blurring and contouring (surface, probe_radius, keep_on_surface, spacing,
+// blobbyness, isovalue, blur, min_cavity_volume, ...):
 // the part of the surface options the hierarchy also takes.
 const OptionTable<SurfacePipelineOptions>& volume_table();
 // Quality improvement, smoothing and coarsening weights (not the T0 list).

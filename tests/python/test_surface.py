@@ -40,7 +40,7 @@ def test_defaults_are_the_clis(fas2_cli_surface):
     _, cli_stats = fas2_cli_surface
     defaults = molmesh.defaults("surface")
     cli = cli_stats["parameters"]
-    for name in ["spacing", "blobbyness", "isovalue", "min_cavity_volume", "blur", "coarsen",
+    for name in ["surface", "probe_radius", "spacing", "blobbyness", "isovalue", "min_cavity_volume", "blur", "coarsen",
                  "rings", "alpha", "beta", "raw"]:
         assert defaults[name] == cli[name], name
     assert defaults["truncation"] == cli["kernel_truncation"]
@@ -54,6 +54,24 @@ def test_options_map_to_cli_flags(tmp_path, fas2_atoms):
                            rings=3, beta=1.5, blur="fast")
     assert_same_mesh(surf, molmesh.read_surface(tmp_path / "s.ply"))
     assert surf.report["parameters"]["coarsen"] == [0.2, 0.3]
+
+
+def test_ses_surface_is_the_clis_bit_for_bit(tmp_path):
+    run_cli("surface", DATA / "1a1p.pqr", "--surface", "ses", "-o", tmp_path / "x.off")
+    atoms = molmesh.read_atoms(DATA / "1a1p.pqr")
+    surf = molmesh.surface(atoms, surface="ses")
+    assert surf.report["parameters"]["surface"] == "ses"
+    assert_same_mesh(surf, molmesh.read_surface(tmp_path / "x.off"))
+    # keep_on_surface projects every processing move back onto the SES: other vertices.
+    kept = molmesh.surface(atoms, surface="ses", keep_on_surface=True)
+    assert kept.report["parameters"]["keep_on_surface"] is True
+    assert kept.stats()["min_angle_deg"] != surf.stats()["min_angle_deg"]
+    # Not the Gaussian surface of the same atoms.
+    assert surf.vertices.shape != molmesh.surface(atoms).vertices.shape
+    with pytest.raises(ValueError, match="surface='sphere': expected one of"):
+        molmesh.surface(atoms, surface="sphere")
+    with pytest.raises(molmesh.Error, match="probe radius"):
+        molmesh.surface(atoms, surface="sas", probe_radius=-1.0)
 
 
 def test_keep_spheres_as_file_or_array(tmp_path, fas2_atoms):

@@ -28,10 +28,11 @@ void add_surface_pipeline_options(CLI::App& cmd, SurfacePipelineOptions& options
                  "'gaussian' the paper's blurred density (--blobbyness, --isovalue). "
                  "docs/surface.md")
       ->transform(CLI::CheckedTransformer(
-          std::map<std::string, SurfaceKind>{{"gaussian", SurfaceKind::kGaussian},
-                                             {"vdw", SurfaceKind::kVdw},
-                                             {"sas", SurfaceKind::kSas},
-                                             {"ses", SurfaceKind::kSes}},
+          [] {
+            std::map<std::string, SurfaceKind> names;
+            for (SurfaceKind kind : kSurfaceKinds) names[surface_kind_name(kind)] = kind;
+            return names;
+          }(),
           CLI::ignore_case))
       ->default_str(surface_kind_name(options.surface))
       ->type_name("ses|sas|vdw|gaussian");
