@@ -74,6 +74,17 @@ const OptionTable<solvers::SmoluchowskiOptions>& smoluchowski_table() {
   return table;
 }
 
+// charge= (potential= is taken apart: the call keeps its grid alive).
+const OptionTable<solvers::LigandPotential>& ligand_table() {
+  static const auto table = [] {
+    OptionTable<solvers::LigandPotential> t;
+    t.field("charge", MOLMESH_FIELD(charge),
+            "charge z of the diffusing ligand: beta W = z * phi (with potential)");
+    return t;
+  }();
+  return table;
+}
+
 const OptionTable<solvers::PoissonOptions>& poisson_table() {
   static const auto table = [] {
     OptionTable<solvers::PoissonOptions> t;
@@ -140,27 +151,29 @@ void bind_solvers(py::module_& m) {
       });
 
   const std::string smol_doc =
-      "solve_smoluchowski(hierarchy, *, potential=None, charge=1.0, progress=None, **options) "
+      "solve_smoluchowski(hierarchy, *, potential=None, progress=None, **options) "
       "-> SolveResult\n\n"
       "Steady-state Smoluchowski diffusion in the solvent of a hierarchy level, as `molmesh "
       "solve smoluchowski` (c = bulk on the outer sphere, 0 on absorbing faces). potential: "
       "phi in kT/e (a Volume or a .dx/.mrc path), beta W = charge * phi. fields: "
       "'concentration' (units of c_bulk), 'beta_W'. Options (default):\n" +
       setup_table().describe(SolveSetup{}) +
-      smoluchowski_table().describe(solvers::SmoluchowskiOptions{});
+      smoluchowski_table().describe(solvers::SmoluchowskiOptions{}) +
+      ligand_table().describe(solvers::LigandPotential{});
   m.def(
       "solve_smoluchowski",
       [](const PyHierarchy& h, py::kwargs kwargs) {
         py::dict kw(kwargs);
         py::object progress = kw.contains("progress") ? kw.attr("pop")("progress") : py::none();
         py::object potential = kw.contains("potential") ? kw.attr("pop")("potential") : py::none();
-        const double charge =
-            kw.contains("charge") ? py::cast<double>(kw.attr("pop")("charge")) : 1.0;
         SolveSetup setup;
         solvers::SmoluchowskiOptions options;
+        solvers::LigandPotential ligand;
         setup_table().take(kw, setup);
         smoluchowski_table().take(kw, options);
-        reject_unknown(kw, "solve_smoluchowski", names_of(setup_table(), smoluchowski_table()));
+        ligand_table().take(kw, ligand);
+        reject_unknown(kw, "solve_smoluchowski",
+                       names_of(setup_table(), smoluchowski_table(), ligand_table()));
         options.solver = setup.solver;
         std::shared_ptr<const Grid> grid;
         if (py::isinstance<PyVolume>(potential)) {
@@ -170,11 +183,11 @@ void bind_solvers(py::module_& m) {
           py::gil_scoped_release release;
           grid = std::make_shared<const Grid>(read_volume(path));
         }
+        ligand.potential = grid.get();
         const std::shared_ptr<const Hierarchy> hierarchy = h.hierarchy;
         PythonProgress bridge(progress);
         solvers::HierarchySmoluchowskiResult out = bridge.run([&](const Reporter& r) {
-          return solvers::solve_smoluchowski(*hierarchy, setup.levels, options, grid.get(), charge,
-                                             r);
+          return solvers::solve_smoluchowski(*hierarchy, setup.levels, options, ligand, r);
         });
         const int outside = out.vertices_outside_potential_grid;
         PySolveResult result;
@@ -194,7 +207,7 @@ void bind_solvers(py::module_& m) {
         result.report["rate_constant_M-1s-1"] = out.result.rate_constant_per_molar_per_s;
         py::dict parameters = setup_table().values(setup);
         parameters.attr("update")(smoluchowski_table().values(options));
-        parameters["charge"] = charge;
+        parameters.attr("update")(ligand_table().values(ligand));
         result.report["parameters"] = parameters;
         return result;
       },
@@ -202,8 +215,8 @@ void bind_solvers(py::module_& m) {
   register_defaults("solve_smoluchowski", [] {
     py::dict d = setup_table().values(SolveSetup{});
     d.attr("update")(smoluchowski_table().values(solvers::SmoluchowskiOptions{}));
+    d.attr("update")(ligand_table().values(solvers::LigandPotential{}));
     d["potential"] = py::none();
-    d["charge"] = 1.0;
     return d;
   });
 

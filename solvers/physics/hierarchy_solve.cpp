@@ -39,8 +39,10 @@ PotentialSamples sample_potential(const Grid& potential, double charge, const Te
 HierarchySmoluchowskiResult solve_smoluchowski(const Hierarchy& hierarchy,
                                                const HierarchySolveOptions& options,
                                                const SmoluchowskiOptions& physics,
-                                               const Grid* potential, double charge,
+                                               const LigandPotential& ligand,
                                                const Reporter& reporter) {
+  const Grid* potential = ligand.potential;
+  const double charge = ligand.charge;
   const SolveLevels levels = solve_levels(hierarchy, options, physics.solver.preconditioning);
   HierarchySmoluchowskiResult out;
   if (potential != nullptr) {

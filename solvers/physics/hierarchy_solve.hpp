@@ -48,18 +48,25 @@ struct PotentialSamples {
 };
 PotentialSamples sample_potential(const Grid& potential, double charge, const TetMesh& mesh);
 
+// The electrostatic steering of a Smoluchowski solve: beta W = charge * phi. The one home of
+// the ligand charge default (`molmesh solve smoluchowski --charge`, Python charge=).
+struct LigandPotential {
+  const Grid* potential = nullptr;  // phi in kT/e, as APBS writes it; nullptr: no steering
+  double charge = 1.0;              // z of the diffusing ligand
+};
+
 struct HierarchySmoluchowskiResult {
   SmoluchowskiResult result;
   std::vector<double> beta_w;  // on the solve level; empty without a potential
   int vertices_outside_potential_grid = 0;
 };
 
-// Steady-state Smoluchowski on `options.level`; `potential` (optional) is phi in kT/e,
-// `charge` the ligand's z. Warns through `reporter` when vertices lie outside the grid.
+// Steady-state Smoluchowski on `options.level`, steered by `ligand.potential` when given.
+// Warns through `reporter` when vertices lie outside the potential grid.
 HierarchySmoluchowskiResult solve_smoluchowski(const Hierarchy& hierarchy,
                                                const HierarchySolveOptions& options,
                                                const SmoluchowskiOptions& physics,
-                                               const Grid* potential = nullptr, double charge = 1.0,
+                                               const LigandPotential& ligand = {},
                                                const Reporter& reporter = {});
 
 // Poisson solvation energy on `options.level` (a full mesh).

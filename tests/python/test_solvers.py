@@ -45,6 +45,29 @@ def test_solver_options_and_fields_match_the_cli(tmp_path, cli_hierarchy, hierar
     assert np.array_equal(stored, result.fields["concentration"])
 
 
+def test_potential_and_charge_are_the_clis(tmp_path, cli_hierarchy, hierarchy):
+    """A potential steers the rate through beta W = charge * phi as in the CLI; the charge
+    default is the CLI's (one struct, solvers::LigandPotential)."""
+    atoms = molmesh.read_atoms(DATA / "1a1p.pqr")
+    phi = molmesh.surface(atoms, raw=True, spacing=1.0, keep_volume=True).report["volume"]
+    phi.write(tmp_path / "phi.dx")
+    run_cli("solve", "smoluchowski", cli_hierarchy, "--level", 1, "--potential",
+            tmp_path / "phi.dx", "--json", tmp_path / "default.json", "--no-fields")
+    run_cli("solve", "smoluchowski", cli_hierarchy, "--level", 1, "--potential",
+            tmp_path / "phi.dx", "--charge", -2, "--json", tmp_path / "minus2.json",
+            "--no-fields")
+    default, minus2 = read_json(tmp_path / "default.json"), read_json(tmp_path / "minus2.json")
+    assert molmesh.defaults("solve_smoluchowski")["charge"] == default["charge"]
+    result = molmesh.solve_smoluchowski(hierarchy, level=1, potential=phi)
+    assert result.report["parameters"]["charge"] == default["charge"]
+    assert result.rate_constant == default["rate_constant_M-1s-1"]
+    steered = molmesh.solve_smoluchowski(hierarchy, level=1, potential=tmp_path / "phi.dx",
+                                         charge=-2.0)
+    assert steered.rate_constant == minus2["rate_constant_M-1s-1"]
+    assert steered.rate_constant != result.rate_constant
+    np.testing.assert_allclose(steered.fields["beta_W"], -2.0 * result.fields["beta_W"])
+
+
 def test_solvation_energy_is_the_clis(tmp_path, cli_hierarchy, hierarchy):
     run_cli("solve", "poisson", cli_hierarchy, "--pqr", DATA / "1a1p.pqr", "--json",
             tmp_path / "p.json", "--no-fields")

@@ -43,7 +43,7 @@ struct SmoluchowskiArgs {
   double diffusion = 1e-5;
   std::string absorbing = "surface";
   std::string potential;
-  double charge = 1.0;
+  double charge = solvers::LigandPotential{}.charge;
 };
 
 struct PoissonArgs {
@@ -168,9 +168,9 @@ void run_smoluchowski(const SmoluchowskiArgs& args, const CliContext& ctx,
           : std::vector<int>{markers::kMolecularSurface, markers::kActiveSite};
   options.solver = solver_options(args.common);
   options.solver.engine = engine.linear_engine;
-  const auto solved =
-      solvers::solve_smoluchowski(hierarchy, hierarchy_options(args.common), options,
-                                  grid ? &*grid : nullptr, args.charge, reporter);
+  const auto solved = solvers::solve_smoluchowski(
+      hierarchy, hierarchy_options(args.common), options,
+      solvers::LigandPotential{grid ? &*grid : nullptr, args.charge}, reporter);
   const auto& result = solved.result;
   if (!engine.writes_output) return;
   const TetMesh& mesh = hierarchy.levels[static_cast<std::size_t>(args.common.level)].volume;
