@@ -9,6 +9,7 @@
 
 #include "bindings.hpp"
 #include "errors.hpp"
+#include "molmesh/core/version.hpp"
 #include "options.hpp"
 
 namespace molmesh::python {
@@ -65,7 +66,7 @@ namespace py = pybind11;
 PYBIND11_MODULE(_core, m) {
   namespace mp = molmesh::python;
   m.doc() = "molmesh: molecules to adaptive surface and tetrahedral meshes (GAMer method)";
-  m.attr("__version__") = "0.1.0";
+  m.attr("__version__") = molmesh::version();  // project(VERSION), as `molmesh --version`
   mp::bind_errors(m);
   mp::bind_atoms(m);
   mp::bind_surface(m);
