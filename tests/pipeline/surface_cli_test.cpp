@@ -1,6 +1,7 @@
 // The `surface` and `stats` commands, run as a user would.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -51,13 +52,29 @@ TEST(SurfaceCli, WritesMeshAndStatsJson) {
                                           "manifold",
                                           "timings_s",
                                           "input",
-                                          "parameters"};
+                                          "parameters",
+                                          "levelset_distance_mean",
+                                          "levelset_distance_max",
+                                          "centroid_distance_mean",
+                                          "centroid_distance_max"};
   // The keys must all be there; processing adds dislocation and per-stage stats.
   for (const auto& key : required) EXPECT_TRUE(doc.contains(key)) << key;
   EXPECT_TRUE(doc["closed"].get<bool>());
   EXPECT_TRUE(doc["manifold"].get<bool>());
   EXPECT_GT(doc["volume"].get<double>(), 0.0);
   EXPECT_EQ(doc["angle_histogram_percent"].size(), 18u);
+  // Marching cubes puts the vertices on the grid's linear interpolant of Eq. 1 along the
+  // edges: a small fraction of the 0.5 Å spacing from the exact level set.
+  for (const char* key : {"levelset_distance_mean", "levelset_distance_max",
+                          "centroid_distance_mean", "centroid_distance_max"}) {
+    ASSERT_TRUE(doc[key].is_number()) << key;
+    EXPECT_TRUE(std::isfinite(doc[key].get<double>())) << key;
+    EXPECT_GE(doc[key].get<double>(), 0.0) << key;
+  }
+  EXPECT_LT(doc["levelset_distance_mean"].get<double>(), 0.02);
+  EXPECT_LT(doc["levelset_distance_max"].get<double>(), 0.1);
+  EXPECT_LE(doc["levelset_distance_mean"].get<double>(),
+            doc["levelset_distance_max"].get<double>());
   double percent = 0.0;
   for (const auto& v : doc["angle_histogram_percent"]) percent += v.get<double>();
   EXPECT_NEAR(percent, 100.0, 1e-6);

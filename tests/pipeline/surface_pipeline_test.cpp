@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <string>
 
 #include "molmesh/core/error.hpp"
@@ -63,6 +64,49 @@ TEST(SurfacePipeline, EmptyIsosurfaceIsAnError) {
   SurfacePipelineOptions options;
   options.isovalue = 50.0;  // far above the peak exp(0.5) of a lone atom
   EXPECT_THROW(surface_from_atoms({a}, options), Error);
+}
+
+}  // namespace
+}  // namespace molmesh
+
+namespace molmesh {
+namespace {
+
+// The distance to Eq. 1's level set is measured for the Gaussian surface of atoms, with both
+// blur methods, and only when asked for; processing moves vertices off the grid's
+// interpolant, so the processed vertices lie farther from the level set than the raw ones.
+TEST(SurfacePipeline, LevelSetDistanceOfTheGaussianSurface) {
+  const Atoms atoms = read_atoms(std::string(MOLMESH_TEST_DATA_DIR) + "/1a1p.pqr");
+  SurfacePipelineOptions options;
+  options.raw = true;
+  const SurfacePipelineResult raw = surface_from_atoms(atoms, options);
+  ASSERT_TRUE(raw.level_set_distance.has_value());
+  options.raw = false;
+  const SurfacePipelineResult processed = surface_from_atoms(atoms, options);
+  ASSERT_TRUE(processed.level_set_distance.has_value());
+  for (const LevelSetDistance& d : {*raw.level_set_distance, *processed.level_set_distance}) {
+    for (double v : {d.vertex_mean, d.vertex_max, d.centroid_mean, d.centroid_max}) {
+      EXPECT_TRUE(std::isfinite(v));
+      EXPECT_GE(v, 0.0);
+    }
+    EXPECT_LE(d.vertex_mean, d.vertex_max);
+    EXPECT_LE(d.centroid_mean, d.centroid_max);
+    EXPECT_LT(d.vertex_max, options.blur.spacing * 2);
+  }
+  EXPECT_LT(raw.level_set_distance->vertex_mean, 0.04 * options.blur.spacing);
+  EXPECT_GT(processed.level_set_distance->vertex_mean, raw.level_set_distance->vertex_mean);
+
+  options.raw = true;
+  options.blur_method = BlurMethod::kFast;
+  const SurfacePipelineResult fast = surface_from_atoms(atoms, options);
+  ASSERT_TRUE(fast.level_set_distance.has_value());
+  EXPECT_LT(fast.level_set_distance->vertex_mean, 0.1 * options.blur.spacing);
+
+  options.measure = false;
+  EXPECT_FALSE(surface_from_atoms(atoms, options).level_set_distance.has_value());
+  options.measure = true;
+  options.surface = SurfaceKind::kVdw;
+  EXPECT_FALSE(surface_from_atoms(atoms, options).level_set_distance.has_value());
 }
 
 }  // namespace

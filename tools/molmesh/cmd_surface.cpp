@@ -81,6 +81,13 @@ void run(const SurfaceArgs& args, const CliContext& ctx) {
         stats_document(stats, timings, input, surface_parameters_json(args.options));
     document["dislocation_max"] = result.dislocation.max;
     document["dislocation_mean"] = result.dislocation.mean;
+    if (result.level_set_distance) {
+      const LevelSetDistance& d = *result.level_set_distance;
+      document["levelset_distance_mean"] = d.vertex_mean;
+      document["levelset_distance_max"] = d.vertex_max;
+      document["centroid_distance_mean"] = d.centroid_mean;
+      document["centroid_distance_max"] = d.centroid_max;
+    }
     nlohmann::json stages = nlohmann::json::array();
     for (const StageRecord& stage : result.stages) {
       stages.push_back({{"name", stage.name},

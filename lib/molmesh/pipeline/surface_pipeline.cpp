@@ -12,6 +12,7 @@
 #include "molmesh/surface/components.hpp"
 #include "molmesh/surface/marching_cubes.hpp"
 #include "molmesh/volume/ball_union.hpp"
+#include "molmesh/volume/gaussian_field.hpp"
 #include "molmesh/volume/level_set_projection.hpp"
 #include "molmesh/volume/ses_field.hpp"
 
@@ -97,6 +98,17 @@ void extract_and_process(const Grid& grid, double level, const SurfacePipelineOp
   result.surface = std::move(processed.mesh);
 }
 
+// Eq. 1 as the blur evaluates it, exactly: with the fast blur's one decay rate, the Eq. 1 that
+// its Eq. 2 equals.
+GaussianField exact_field(const Atoms& atoms, const SurfacePipelineOptions& options) {
+  BlurOptions blur = options.blur;
+  blur.isovalue = options.isovalue;
+  if (options.blur_method == BlurMethod::kFast)
+    return GaussianField(with_constant_decay(atoms, constant_decay_rate(atoms, blur.blobbyness)),
+                         blur);
+  return GaussianField(atoms, blur);
+}
+
 }  // namespace
 
 double level_of(const SurfacePipelineOptions& options) {
@@ -143,6 +155,14 @@ SurfacePipelineResult surface_from_atoms(const Atoms& atoms, const SurfacePipeli
     local_projection = level_set_projection(grid, level_of(options));
   extract_and_process(*grid, level_of(options), local_options, local_projection, reporter, result,
                       centre);
+  if (options.measure && options.surface == SurfaceKind::kGaussian) {
+    const auto measure_start = Clock::now();
+    const GaussianField field = exact_field(local_atoms, options);
+    result.level_set_distance = measure_level_set_distance(
+        result.surface, [&field](const Vec3& p, Vec3* g) { return field.value(p, g); },
+        options.isovalue);
+    result.stages.push_back({"level-set distance", seconds_since(measure_start), std::nullopt});
+  }
   for (auto* mesh : {&result.raw, &result.surface})
     for (Vec3& p : mesh->points) p += centre;
   // Callers (the hierarchy) project meshes in input coordinates.

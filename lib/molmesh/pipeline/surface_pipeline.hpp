@@ -12,6 +12,7 @@
 #include "molmesh/atoms/atom.hpp"
 #include "molmesh/core/reporter.hpp"
 #include "molmesh/processing/dislocation.hpp"
+#include "molmesh/processing/level_set_distance.hpp"
 #include "molmesh/processing/process_surface.hpp"
 #include "molmesh/surface/surface_mesh.hpp"
 #include "molmesh/surface/surface_stats.hpp"
@@ -62,6 +63,10 @@ struct SurfacePipelineResult {
   std::vector<StageRecord> stages;
   // Distance of the final surface's vertices to the raw one (zero when raw or not measured).
   Dislocation dislocation;
+  // Distance of the final surface to the level set of Eq. 1 evaluated exactly from the atoms
+  // (volume/gaussian_field.hpp; for the fast blur, the Eq. 1 that Eq. 2 stands for). Only
+  // for the Gaussian surface of atoms, and only when measured.
+  std::optional<LevelSetDistance> level_set_distance;
   std::array<int, 3> grid_dims{0, 0, 0};  // the blurred volume's size (0 for volume input)
   Grid volume;         // the blurred volume, only with options.keep_volume (atoms input)
   double level = 1.0;  // the level marching cubes contoured (isovalue, or 0 for distances)

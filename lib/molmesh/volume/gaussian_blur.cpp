@@ -165,7 +165,7 @@ void check_grid_memory(const std::array<double, 3>& extent, double h, double max
                "use a coarser --spacing, or check the coordinates (atoms far apart)");
 }
 
-Grid blur_atoms(const Atoms& atoms, const BlurOptions& options, const Reporter& reporter) {
+void check_blur_options(const BlurOptions& options) {
   const double h = options.spacing;
   if (!(h > 0.0) || !std::isfinite(h))
     throw Error("grid spacing must be a positive number of Å (got " + std::to_string(h) + ")");
@@ -175,29 +175,43 @@ Grid blur_atoms(const Atoms& atoms, const BlurOptions& options, const Reporter& 
     throw Error("the kernel truncation must lie in (0, 1) (got " +
                 std::to_string(options.truncation) + ")");
   if (options.margin_cells < 0) throw Error("the grid margin must not be negative");
+}
 
-  std::vector<int> active;
-  std::vector<double> blob;
-  Box box{Vec3::Constant(std::numeric_limits<double>::max()),
-          Vec3::Constant(std::numeric_limits<double>::lowest())};
+std::vector<BlurredAtom> blurred_atoms(const Atoms& atoms, double blobbyness) {
+  std::vector<BlurredAtom> out;
   for (std::size_t n = 0; n < atoms.size(); ++n) {
     const Atom& atom = atoms[n];
     if (!(atom.radius > 0.0)) continue;
-    const double b = atom.blobbyness.value_or(options.blobbyness);
+    const double b = atom.blobbyness.value_or(blobbyness);
     if (!(b < 0.0) || !std::isfinite(b))
       throw Error("blobbyness must be negative (got " + std::to_string(b) + " for atom " +
                   std::to_string(n + 1) + ")");
     if (!atom.center.allFinite())
       throw Error("atom " + std::to_string(n + 1) + " has a non-finite position");
-    active.push_back(static_cast<int>(n));
-    blob.push_back(b);
+    out.push_back({atom.center, atom.radius, b, n});
+  }
+  if (out.empty()) throw Error("no atom has a positive radius: nothing to blur");
+  return out;
+}
+
+Grid blur_atoms(const Atoms& atoms, const BlurOptions& options, const Reporter& reporter) {
+  check_blur_options(options);
+  const double h = options.spacing;
+
+  std::vector<int> active;
+  std::vector<double> blob;
+  Box box{Vec3::Constant(std::numeric_limits<double>::max()),
+          Vec3::Constant(std::numeric_limits<double>::lowest())};
+  for (const BlurredAtom& atom : blurred_atoms(atoms, options.blobbyness)) {
+    active.push_back(static_cast<int>(atom.index));
+    blob.push_back(atom.blobbyness);
     // Where this atom alone reaches the isovalue; at least its radius, so that even a
     // field made only of overlapping tails starts from a sensible box.
-    const double reach = std::max(atom.radius, kernel_radius(atom.radius, b, options.isovalue));
+    const double reach =
+        std::max(atom.radius, kernel_radius(atom.radius, atom.blobbyness, options.isovalue));
     box.lo = box.lo.cwiseMin(atom.center - Vec3::Constant(reach));
     box.hi = box.hi.cwiseMax(atom.center + Vec3::Constant(reach));
   }
-  if (active.empty()) throw Error("no atom has a positive radius: nothing to blur");
 
   const double cutoff_value = options.truncation * options.isovalue;
   int margin = options.margin_cells;

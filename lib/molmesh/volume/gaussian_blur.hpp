@@ -4,6 +4,8 @@
 // the molecule and decreases outward. Decisions (cutoff, error bound, margin) are in
 // docs/surface.md.
 #include <array>
+#include <cstddef>
+#include <vector>
 
 #include "molmesh/atoms/atom.hpp"
 #include "molmesh/core/reporter.hpp"
@@ -27,6 +29,23 @@ struct BlurOptions {
   // allocated, with the size it would need (core/resource_limits.hpp).
   double max_memory_bytes = default_memory_limit();
 };
+
+// Throws Error for a non-positive spacing or isovalue, a truncation outside (0, 1) or a
+// negative margin (the checks blur_atoms and GaussianField share).
+void check_blur_options(const BlurOptions& options);
+
+// An atom Eq. 1 sums: one with a positive radius, with its B_i (Atom::blobbyness, or the
+// global B). `index` is its position in the input.
+struct BlurredAtom {
+  Vec3 center;
+  double radius = 0.0;
+  double blobbyness = 0.0;
+  std::size_t index = 0;
+};
+
+// The atoms with a positive radius, in input order. Throws Error for a non-negative or
+// non-finite B_i, a non-finite position, or no atom with a positive radius.
+std::vector<BlurredAtom> blurred_atoms(const Atoms& atoms, double blobbyness);
 
 // Throws Error (needed memory, the limit, "use a coarser --spacing") when a grid of
 // extent[0] x extent[1] x extent[2] samples of spacing h needs more than max_memory_bytes.

@@ -10,6 +10,10 @@
 
 namespace molmesh {
 
+// A scalar field and its gradient at a point (the gradient written when the pointer is set),
+// e.g. trilinear_value on a grid or GaussianField::value. Must be thread-safe.
+using ScalarField = std::function<double(const Vec3&, Vec3*)>;
+
 // Trilinear value and gradient at p (clamped to the grid).
 double trilinear_value(const Grid& grid, const Vec3& p, Vec3* gradient = nullptr);
 
