@@ -96,7 +96,7 @@ TEST(OutputPaths, DevFullIsExitCode4) {
 TEST(OutputPaths, FileSizeLimitIsExitCode4AndLeavesNothing) {
   // ulimit -f: writes beyond 64 blocks fail (SIGXFSZ is ignored by the CLI).
   const auto dir = scratch("fsize");
-  for (const std::string command :
+  for (const std::string& command :
        {"surface " + kFas2 + " --raw -o " + (dir / "s.off").string(),
         "hierarchy " + k1a1p + " --t0 0.2 --domain interior -o " + (dir / "h.h5").string()}) {
     const auto r = test::run_molmesh(command, "ulimit -f 16;");

@@ -24,7 +24,9 @@ void expect_clean_end(const std::string& command) {
   const auto r = test::run_molmesh(command);
   EXPECT_EQ(r.signal, 0) << command << "\n" << r.err;
   EXPECT_TRUE(r.code == 0 || r.code == 1) << command << ": exit " << r.code << "\n" << r.err;
-  if (r.code == 1) EXPECT_NE(r.err.find("molmesh: error:"), std::string::npos) << r.err;
+  if (r.code == 1) {
+    EXPECT_NE(r.err.find("molmesh: error:"), std::string::npos) << r.err;
+  }
 }
 
 struct Case {

@@ -21,6 +21,7 @@
 #include "molmesh/pipeline/surface_pipeline.hpp"
 #include "option_checks.hpp"
 #include "surface_options.hpp"
+#include "volume_options.hpp"
 
 namespace molmesh::cli {
 namespace {
@@ -28,19 +29,10 @@ namespace {
 struct HierarchyArgs {
   std::string input;
   std::string output;
-  std::string domain = "full";
   // Atoms, surface and processing: the shared layer (surface_options.hpp). Its coarsening
   // thresholds are the levels' T0 here (HierarchyOptions::t0 by default).
   SurfaceCliOptions surface;
-  // volume
-  double sphere_ratio = 40.0;
-  double outer_radius = 0.0;
-  int outer_subdivisions = 3;
-  std::string active_site;
-  double max_radius_edge = 2.0;
-  double min_dihedral = 10.0;
-  double max_volume = 0.0;
-  double size_factor = 1.0;
+  VolumeCliOptions volume;  // the shared layer (volume_options.hpp), the same on every level
   double size_growth = HierarchyOptions{}.size_growth;
   bool no_renumber = false;
 };
@@ -77,24 +69,11 @@ void run(const HierarchyArgs& args, const CliContext& ctx) {
     for (const Sphere& s : read_spheres(pipeline.keep_spheres_file))
       options.processing.keep_spheres.push_back(s);
   }
-  const std::map<std::string, Domain> domains{
-      {"interior", Domain::interior}, {"exterior", Domain::exterior}, {"full", Domain::full}};
-  options.tetmesh.domain = domains.at(args.domain);
-  options.tetmesh.sphere_ratio = args.sphere_ratio;
-  if (args.outer_radius > 0) options.tetmesh.outer_radius = args.outer_radius;
-  options.tetmesh.outer_sphere_subdivisions = args.outer_subdivisions;
-  if (!args.active_site.empty()) {
-    options.tetmesh.active_site = read_spheres(args.active_site);
-    // The active site stays dense on every level (paper Fig. 5).
-    options.processing.keep_spheres.insert(options.processing.keep_spheres.end(),
-                                           options.tetmesh.active_site.begin(),
-                                           options.tetmesh.active_site.end());
-  }
-  options.tetmesh.max_radius_edge_ratio = args.max_radius_edge;
-  options.tetmesh.min_dihedral_deg = args.min_dihedral;
-  if (args.max_volume > 0) options.tetmesh.max_volume = args.max_volume;
-  options.tetmesh.size_factor = args.size_factor;
-  options.tetmesh.max_memory_bytes = pipeline.blur.max_memory_bytes;
+  options.tetmesh = volume_options(args.volume, pipeline.blur.max_memory_bytes);
+  // The active site stays dense on every level (paper Fig. 5).
+  options.processing.keep_spheres.insert(options.processing.keep_spheres.end(),
+                                         options.tetmesh.active_site.begin(),
+                                         options.tetmesh.active_site.end());
   options.size_growth = args.size_growth;
   options.renumber = !args.no_renumber;
 
@@ -104,7 +83,7 @@ void run(const HierarchyArgs& args, const CliContext& ctx) {
   hierarchy.input_checksum = sha256_file(args.input);
   auto& p = hierarchy.parameters;
   p["t0"] = join(options.t0);
-  p["domain"] = args.domain;
+  p["domain"] = args.volume.domain;
   p["surface"] = surface_kind_name(pipeline.surface);
   p["probe_radius"] = text(pipeline.probe_radius);
   p["spacing"] = text(pipeline.blur.spacing);
@@ -120,15 +99,15 @@ void run(const HierarchyArgs& args, const CliContext& ctx) {
   p["radii"] = args.surface.atoms.radii_file ? args.surface.atoms.radii_file->string() : "";
   p["hetatm"] = args.surface.atoms.include_hetatm ? "yes" : "no";
   p["waters"] = args.surface.atoms.include_waters ? "yes" : "no";
-  p["sphere_ratio"] = text(args.sphere_ratio);
+  p["sphere_ratio"] = text(options.tetmesh.sphere_ratio);
   p["outer_radius"] = text(report.outer_radius);
-  p["outer_sphere_subdivisions"] = std::to_string(args.outer_subdivisions);
-  p["active_site"] = args.active_site;
+  p["outer_sphere_subdivisions"] = std::to_string(options.tetmesh.outer_sphere_subdivisions);
+  p["active_site"] = args.volume.active_site;
   p["active_site_spheres"] = std::to_string(options.tetmesh.active_site.size());
-  p["max_radius_edge_ratio"] = text(args.max_radius_edge);
-  p["min_dihedral_deg"] = text(args.min_dihedral);
-  p["max_volume"] = args.max_volume > 0 ? text(args.max_volume) : "none";
-  p["size_factor"] = text(args.size_factor);
+  p["max_radius_edge_ratio"] = text(options.tetmesh.max_radius_edge_ratio);
+  p["min_dihedral_deg"] = text(options.tetmesh.min_dihedral_deg);
+  p["max_volume"] = options.tetmesh.max_volume ? text(*options.tetmesh.max_volume) : "none";
+  p["size_factor"] = text(options.tetmesh.size_factor);
   p["size_growth"] = text(args.size_growth);
   p["renumbering"] = args.no_renumber ? "none" : "reverse Cuthill-McKee";
   if (!report.levels.empty()) p["tetgen_switches"] = report.levels.front().tetmesh.tetgen_switches;
@@ -167,12 +146,6 @@ const CommandRegistration registration{
              "are written beside it")
           ->required()
           ->check(output_extension({".h5"}));
-      cmd->add_option(
-             "--domain", args->domain,
-             "Volume meshed on every level: interior (molecule), exterior (solvent up to the "
-             "outer sphere) or full (both, conforming)")
-          ->check(CLI::IsMember({"interior", "exterior", "full"}))
-          ->capture_default_str();
       args->surface.pipeline.processing.t0 = HierarchyOptions{}.t0;
       add_surface_options(*cmd, args->surface);
       // Every level is processed by the hierarchy itself, so there is no raw surface to
@@ -187,39 +160,8 @@ const CommandRegistration registration{
           ->check(finite_in(0, 1e3))
           ->capture_default_str()
           ->type_name("T0[,T0...]");
-      cmd->add_option("--sphere-ratio", args->sphere_ratio,
-                      "Outer sphere radius as a multiple of the molecule size (exterior/full)")
-          ->check(finite_above(0, 1e4))
-          ->capture_default_str();
-      cmd->add_option(
-             "--outer-radius", args->outer_radius,
-             "Outer sphere radius in Å (overrides --sphere-ratio); the same on every level")
-          ->check(finite_above(0, kMaxOuterRadius));
-      cmd->add_option("--outer-sphere-subdivisions", args->outer_subdivisions,
-                      "Icosphere subdivision level of the outer sphere (10*4^L+2 vertices)")
-          ->check(CLI::Range(0, 6))
-          ->capture_default_str();
-      cmd->add_option(
-             "--active-site", args->active_site,
-             "Sphere list file (x y z r per line, Å): faces inside are marked active site (3) "
-             "and no vertex inside is removed by coarsening on any level")
-          ->check(CLI::ExistingFile);
-      cmd->add_option("--max-radius-edge", args->max_radius_edge,
-                      "TetGen quality bound: radius-edge ratio of tetrahedra")
-          ->check(finite_in(1.0, 100.0))
-          ->capture_default_str();
-      cmd->add_option("--min-dihedral", args->min_dihedral,
-                      "TetGen quality bound: minimum dihedral angle (degrees)")
-          ->check(finite_in(0.0, 30.0))
-          ->capture_default_str();
-      cmd->add_option("--max-volume", args->max_volume, "Upper bound on tetrahedron volume (Å³)")
-          ->check(finite_above(0, kLargestValue));
-      cmd->add_option("--size-factor", args->size_factor,
-                      "Size grading (TetGen -m): tetrahedra near the surface and the outer sphere "
-                      "aim at their edge length times this factor, graded in between; smaller: "
-                      "finer near the surface; 0: no grading")
-          ->check(finite_in(0, 1000))
-          ->capture_default_str();
+      add_volume_options(*cmd, args->volume,
+                         "; no vertex inside is removed by coarsening on any level");
       cmd->add_option("--size-growth", args->size_growth,
                       "Level L grades with --size-factor times this to the power L, so coarse "
                       "levels coarsen the far field too, not only the surface (1: same far field "

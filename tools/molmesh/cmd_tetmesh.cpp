@@ -18,6 +18,7 @@
 #include "molmesh/tetmesh/tetrahedralize.hpp"
 #include "option_checks.hpp"
 #include "surface_options.hpp"
+#include "volume_options.hpp"
 
 namespace molmesh::cli {
 namespace {
@@ -29,11 +30,7 @@ struct TetmeshArgs {
   std::string output;
   std::string stats;
   std::string surface_output;
-  std::string active_site;
-  std::string domain = "full";
-  TetMeshOptions tet;
-  double outer_radius = 0.0;
-  double max_volume = 0.0;
+  VolumeCliOptions volume;
   SurfaceCliOptions surface;
 };
 
@@ -41,17 +38,8 @@ void run(const TetmeshArgs& args, const CliContext& ctx) {
   const Reporter reporter = ctx.reporter();
   const auto total_start = Clock::now();
   StageTimings timings;
-  TetMeshOptions options = args.tet;
-  if (args.domain == "interior")
-    options.domain = Domain::interior;
-  else if (args.domain == "exterior")
-    options.domain = Domain::exterior;
-  else
-    options.domain = Domain::full;
-  if (args.outer_radius > 0.0) options.outer_radius = args.outer_radius;
-  if (args.max_volume > 0.0) options.max_volume = args.max_volume;
-  if (!args.active_site.empty()) options.active_site = read_spheres(args.active_site);
-  options.max_memory_bytes = args.surface.pipeline.blur.max_memory_bytes;
+  const TetMeshOptions options =
+      volume_options(args.volume, args.surface.pipeline.blur.max_memory_bytes);
 
   Atoms atoms;
   SurfaceMesh surface;
@@ -93,14 +81,14 @@ void run(const TetmeshArgs& args, const CliContext& ctx) {
     timings.emplace_back("total", seconds_since(total_start));
     nlohmann::json doc = to_json(compute_tet_stats(mesh));
     doc["tetgen"] = to_json(report);
-    doc["domain"] = args.domain;
+    doc["domain"] = args.volume.domain;
     doc["timings_s"] = nlohmann::json::object();
     for (const auto& [name, seconds] : timings) doc["timings_s"][name] = seconds;
     input["output"] = args.output;
     doc["input"] = input;
     nlohmann::json parameters =
         atoms.empty() ? nlohmann::json::object() : surface_parameters_json(args.surface);
-    parameters["domain"] = args.domain;
+    parameters["domain"] = args.volume.domain;
     parameters["sphere_ratio"] = options.sphere_ratio;
     parameters["outer_sphere_subdivisions"] = options.outer_sphere_subdivisions;
     parameters["max_radius_edge_ratio"] = options.max_radius_edge_ratio;
@@ -133,53 +121,12 @@ const CommandRegistration registration{
           ->required()
           ->check(output_extension({".m", ".mcsf", ".vtu", ".msh", ".msh4"}))
           ->type_name("OUT");
-      cmd->add_option("--domain", args->domain,
-                      "interior: the molecule (region 1); exterior: the solvent between the "
-                      "molecular surface and the outer sphere (region 2); full: both")
-          ->check(CLI::IsMember({"interior", "exterior", "full"}))
-          ->capture_default_str();
       cmd->add_option("--stats", args->stats,
                       "Write tetrahedron quality (counts per region and marker, dihedral angles, "
                       "radius-edge ratios, volumes), TetGen report, timings as JSON")
           ->type_name("FILE.json");
-      cmd->add_option("--sphere-ratio", args->tet.sphere_ratio,
-                      "Outer sphere radius as a multiple of the molecule size (largest distance "
-                      "of an atom centre from their mean; of a surface point for surface input)")
-          ->check(finite_above(0, 1e4))
-          ->capture_default_str();
-      cmd->add_option("--outer-radius", args->outer_radius,
-                      "Outer sphere radius in Å (overrides --sphere-ratio; needed for one atom)")
-          ->check(finite_above(0, kMaxOuterRadius))
-          ->type_name("R");
-      cmd->add_option("--sphere-subdivisions", args->tet.outer_sphere_subdivisions,
-                      "Outer sphere triangulation: icosahedron subdivided L times (10*4^L+2 "
-                      "vertices); coarse keeps the far field coarse")
-          ->check(CLI::Range(0, 7))
-          ->capture_default_str();
-      cmd->add_option("--active-site", args->active_site,
-                      "Spheres (x y z r per line, Å) marking the active site: molecular-surface "
-                      "faces with all three vertices inside get marker 3 (MCSF type 3)")
-          ->check(CLI::ExistingFile)
-          ->type_name("FILE");
-      cmd->add_option("--max-radius-edge", args->tet.max_radius_edge_ratio,
-                      "TetGen -q radius-edge ratio bound (smaller: better tets, more points)")
-          ->check(finite_in(1, 1000))
-          ->capture_default_str();
-      cmd->add_option("--min-dihedral", args->tet.min_dihedral_deg,
-                      "TetGen -q minimum dihedral angle in degrees (sought by its optimiser)")
-          ->check(finite_in(0.0, 70.0))
-          ->capture_default_str();
-      cmd->add_option("--max-volume", args->max_volume,
-                      "TetGen -a: largest tetrahedron volume in Å^3 (default: unbounded)")
-          ->check(finite_above(0, kLargestValue))
-          ->type_name("V");
-      cmd->add_option("--size-factor", args->tet.size_factor,
-                      "Size grading (TetGen -m): tetrahedra near an input vertex aim at its mean "
-                      "edge length times this factor, interpolated between the molecular surface "
-                      "and the outer sphere; smaller: finer near the surface; 0: no grading")
-          ->check(finite_in(0, 1000))
-          ->capture_default_str();
-      cmd->add_option("--tetgen-switches", args->tet.tetgen_switches,
+      add_volume_options(*cmd, args->volume, "");
+      cmd->add_option("--tetgen-switches", args->volume.tet.tetgen_switches,
                       "Expert: TetGen switches replacing the ones above (e.g. pYq1.5/15); molmesh "
                       "adds p, z, n and Q when missing. Without Y TetGen may split "
                       "the molecular surface")

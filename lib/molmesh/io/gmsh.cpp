@@ -142,17 +142,20 @@ void write_gmsh(const std::filesystem::path& path, const TetMesh& mesh, GmshVers
         .ch(' ')
         .integer(tets_by_tag.size())
         .ch('\n');
-    for (const auto& [tag, list] : faces_by_tag) {
+    // clang 14 cannot capture structured bindings in a lambda (P1091 came in clang 16).
+    for (const auto& entry : faces_by_tag) {
+      const int tag = entry.first;
       out.integer(tag).ch(' ');
-      bbox([&](auto&& visit) {
+      bbox([&, &list = entry.second](auto&& visit) {
         for (std::size_t f : list)
           for (int v : mesh.boundary_faces[f]) visit(v);
       });
       out.text(" 1 ").integer(tag).text(" 0\n");
     }
-    for (const auto& [tag, list] : tets_by_tag) {
+    for (const auto& entry : tets_by_tag) {
+      const int tag = entry.first;
       out.integer(tag).ch(' ');
-      bbox([&](auto&& visit) {
+      bbox([&, &list = entry.second](auto&& visit) {
         for (std::size_t t : list)
           for (int v : mesh.tetrahedra[t]) visit(v);
       });

@@ -108,16 +108,19 @@ Grid parse_mrc(const std::string& bytes, const std::string& name) {
   const auto count =
       io_detail::checked_product({static_cast<std::size_t>(n[0]), static_cast<std::size_t>(n[1]),
                                   static_cast<std::size_t>(n[2])});
-  const auto data_bytes = count ? io_detail::checked_product({*count, value_bytes}) : std::nullopt;
+  const std::optional<std::size_t> data_bytes =
+      count ? io_detail::checked_product({*count, value_bytes}) : std::nullopt;
   const std::string shape = std::to_string(n[0]) + "x" + std::to_string(n[1]) + "x" +
                             std::to_string(n[2]) + " values of " + std::to_string(value_bytes) +
                             " bytes";
-  if (!data_bytes || bytes.size() < data_start || bytes.size() - data_start < *data_bytes)
+  // value_or, not *: gcc 12 -O2 sees the optional's payload as maybe uninitialised.
+  const std::size_t needed = data_bytes.value_or(0);
+  if (!data_bytes.has_value() || bytes.size() < data_start || bytes.size() - data_start < needed)
     throw InputError(name, "file has " + std::to_string(bytes.size()) + " bytes but the header (" +
                                shape + ", after " + std::to_string(data_start) +
                                " header bytes) needs " +
-                               (data_bytes ? std::to_string(data_start + *data_bytes)
-                                           : std::string("more than 2^64")) +
+                               (data_bytes.has_value() ? std::to_string(data_start + needed)
+                                                       : std::string("more than 2^64")) +
                                " (truncated file or corrupt header?)");
 
   // File axis f (0 = columns, fastest) runs along space axis axis[f]-1.
