@@ -10,6 +10,7 @@
 #include "arrays.hpp"
 #include "bindings.hpp"
 #include "molmesh/io/read_atoms.hpp"
+#include "molmesh/io/sha256.hpp"
 #include "options.hpp"
 #include "progress.hpp"
 #include "types.hpp"
@@ -97,7 +98,7 @@ void bind_atoms(py::module_& m) {
                       "or read with molmesh.read_atoms(path). Arrays are copies (float64).")
       .def(py::init([](const py::object& positions, const py::object& radii,
                        const py::object& charges, const py::object& blobbyness) {
-             return PyAtoms{atoms_from_arrays(positions, radii, charges, blobbyness)};
+             return PyAtoms{atoms_from_arrays(positions, radii, charges, blobbyness), std::nullopt};
            }),
            py::arg("positions"), py::arg("radii"), py::arg("charges") = py::none(),
            py::arg("blobbyness") = py::none(),
@@ -180,10 +181,15 @@ void bind_atoms(py::module_& m) {
         atom_read_table().take(kw, options);
         reject_unknown(kw, "read_atoms", names_of(atom_read_table()));
         PythonProgress bridge(progress);
-        auto atoms = bridge.run([&](const Reporter& r) {
+        PyAtoms out;
+        out.atoms = bridge.run([&](const Reporter& r) {
           return std::make_shared<const Atoms>(read_atoms(path, options, r));
         });
-        return PyAtoms{std::move(atoms)};
+        {
+          py::gil_scoped_release release;
+          out.source = AtomsSource{path.filename().string(), sha256_file(path), options};
+        }
+        return out;
       },
       py::arg("path"), doc.c_str());
   register_defaults("read_atoms", [] { return atom_read_table().values(AtomReadOptions{}); });

@@ -10,6 +10,7 @@
 #include "bindings.hpp"
 #include "hierarchy_objects.hpp"
 #include "molmesh/io/hierarchy_hdf5.hpp"
+#include "molmesh/pipeline/hierarchy_parameters.hpp"
 #include "progress.hpp"
 #include "surface_objects.hpp"
 #include "tables.hpp"
@@ -149,6 +150,10 @@ void bind_hierarchy(py::module_& m) {
       [](const py::object& input, const py::object& atoms_arg, py::kwargs kwargs) {
         py::dict kw(kwargs);
         py::object progress = kw.contains("progress") ? kw.attr("pop")("progress") : py::none();
+        // A sphere file's name is recorded as the CLI records --active-site's.
+        std::string active_site_file;
+        if (kw.contains("active_site") && is_path(kw["active_site"]))
+          active_site_file = py::cast<std::filesystem::path>(kw["active_site"]).string();
         HierarchyOptions options;
         hierarchy_table().take(kw, options);
         // As `molmesh hierarchy --active-site`: the active site stays dense on every level.
@@ -192,10 +197,18 @@ void bind_hierarchy(py::module_& m) {
         });
         py::dict parameters = hierarchy_table().values(options);
         if (atoms_input) parameters.attr("update")(volume_table().values(surface_options));
-        // Recorded in the file like the CLI's parameters (as Python reprs of the values).
-        for (const auto& item : parameters) {
-          out.hierarchy->parameters[py::cast<std::string>(item.first)] =
-              py::str(py::repr(item.second)).cast<std::string>();
+        // Recorded in the file as `molmesh hierarchy` records them (one writer for both).
+        const PyAtoms* read = atoms_input ? &input.cast<PyAtoms&>() : nullptr;
+        std::optional<HierarchySurfaceSource> source;
+        if (read) {
+          source = HierarchySurfaceSource{std::nullopt, surface_options};
+          if (read->source) source->atoms = read->source->options;
+        }
+        out.hierarchy->parameters =
+            hierarchy_parameters(options, out.report, active_site_file, source);
+        if (read && read->source) {
+          out.hierarchy->input_name = read->source->name;
+          out.hierarchy->input_checksum = read->source->checksum;
         }
         py::list levels;
         for (const HierarchyLevelReport& l : out.report.levels) {

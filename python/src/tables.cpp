@@ -33,13 +33,9 @@ py::object spheres_array(const std::vector<Sphere>& spheres) {
   return out;
 }
 
-namespace {
-
 bool is_path(const py::handle& v) {
   return py::isinstance<py::str>(v) || py::hasattr(v, "__fspath__");
 }
-
-}  // namespace
 
 const OptionTable<SurfacePipelineOptions>& volume_table() {
   static const auto table = [] {
@@ -147,11 +143,10 @@ const OptionTable<ImprovePipelineOptions>& improve_table() {
 const OptionTable<TetMeshOptions>& tetmesh_table() {
   static const auto table = [] {
     OptionTable<TetMeshOptions> t;
-    t.choice(
-        "domain", MOLMESH_FIELD(domain),
-        std::vector<std::pair<std::string, Domain>>{
-            {"interior", Domain::interior}, {"exterior", Domain::exterior}, {"full", Domain::full}},
-        "the molecule (region 1), the solvent up to the outer sphere (region 2), or both");
+    std::vector<std::pair<std::string, Domain>> domains;
+    for (Domain d : kDomains) domains.emplace_back(domain_name(d), d);
+    t.choice("domain", MOLMESH_FIELD(domain), domains,
+             "the molecule (region 1), the solvent up to the outer sphere (region 2), or both");
     t.field("sphere_ratio", MOLMESH_FIELD(sphere_ratio),
             "outer sphere radius as a multiple of the molecule size");
     t.field("outer_radius", MOLMESH_FIELD(outer_radius),

@@ -24,6 +24,9 @@ const OptionTable<TetMeshOptions>& tetmesh_table();
 // molmesh.hierarchy: t0 per level, size_growth, renumber + processing_table + tetmesh_table.
 const OptionTable<HierarchyOptions>& hierarchy_table();
 
+// A str or os.PathLike (a file name), as opposed to an array.
+bool is_path(const py::handle& v);
+
 // (n, 4) float64 array of spheres (x, y, z, r) <-> std::vector<Sphere>.
 std::vector<Sphere> to_spheres(const py::handle& value, const char* name);
 py::object spheres_array(const std::vector<Sphere>& spheres);

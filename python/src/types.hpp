@@ -7,9 +7,12 @@
 #include <pybind11/pybind11.h>
 
 #include <memory>
+#include <optional>
+#include <string>
 
 #include "molmesh/atoms/atom.hpp"
 #include "molmesh/hierarchy/hierarchy.hpp"
+#include "molmesh/io/read_atoms.hpp"
 #include "molmesh/surface/surface_mesh.hpp"
 #include "molmesh/tetmesh/tet_mesh.hpp"
 #include "molmesh/volume/grid.hpp"
@@ -18,8 +21,17 @@ namespace molmesh::python {
 
 namespace py = pybind11;
 
+// Where read_atoms() read the atoms from (a hierarchy built from them records it as the
+// CLI does: input name, checksum, the read options among its parameters).
+struct AtomsSource {
+  std::string name;      // the file name, without its folder
+  std::string checksum;  // SHA-256 (hex) of the file's bytes
+  AtomReadOptions options;
+};
+
 struct PyAtoms {
   std::shared_ptr<const Atoms> atoms;
+  std::optional<AtomsSource> source;  // nullopt: from arrays
 };
 
 struct PySurface {

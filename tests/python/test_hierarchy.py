@@ -50,6 +50,33 @@ def test_hierarchy_is_the_clis_bit_for_bit(built, cli_file):
     assert cli.parameters["domain"] == "exterior" and cli.input_name == "1a1p.pqr"
 
 
+def test_parameters_are_the_clis(built, cli_file):
+    """The same options give the same recorded parameters and provenance, key for key."""
+    cli = molmesh.read_hierarchy(cli_file)
+    assert built.parameters == cli.parameters
+    assert built.parameters["t0"] == "0.1,0.3,0.5"
+    assert (built.input_name, built.input_checksum) == (cli.input_name, cli.input_checksum)
+
+
+def test_non_default_parameters_are_the_clis(tmp_path):
+    """Options away from their defaults, an active-site file and the atom selection are
+    recorded as the CLI records them."""
+    atoms = molmesh.read_atoms(DATA / "1a1p.pqr", hetatm=False, waters=True)
+    centre = atoms.positions.mean(axis=0)
+    site = tmp_path / "site.txt"
+    site.write_text(f"{centre[0]} {centre[1]} {centre[2]} 4\n")
+    run_cli("hierarchy", DATA / "1a1p.pqr", "-o", tmp_path / "h.h5", "--t0", "0.2",
+            "--domain", "interior", "--no-hetatm", "--waters", "--active-site", site,
+            "--spacing", "0.6", "--max-volume", "20", "--size-growth", "2", "--no-renumber",
+            "--alpha", "1.5")
+    mine = molmesh.hierarchy(atoms, t0=[0.2], domain="interior", active_site=site, spacing=0.6,
+                             max_volume=20.0, size_growth=2.0, renumber=False, alpha=1.5)
+    cli = molmesh.read_hierarchy(tmp_path / "h.h5")
+    assert mine.parameters == cli.parameters
+    assert mine.parameters["hetatm"] == "no" and mine.parameters["active_site"] == str(site)
+    assert mine.parameters["max_volume"] == "20" and mine.parameters["renumbering"] == "none"
+
+
 def test_prolongations_are_scipy_csr_matching_h5py(built, cli_file):
     h5py = pytest.importorskip("h5py")
     import scipy.sparse
@@ -71,7 +98,7 @@ def test_write_and_read_back(tmp_path, built):
     back = molmesh.read_hierarchy(tmp_path / "mine.h5")
     for a, b in zip(built.levels, back.levels):
         assert_same_tetmesh(a.volume, b.volume)
-    assert back.parameters["domain"] == "'exterior'"
+    assert back.parameters == built.parameters and back.parameters["domain"] == "exterior"
     field = np.arange(len(back.levels[0].volume.vertices), dtype=float)
     molmesh.write_point_field(tmp_path / "mine.h5", 0, "index", field)
     assert molmesh.point_field_names(tmp_path / "mine.h5", 0) == ["index"]

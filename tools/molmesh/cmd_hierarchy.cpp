@@ -1,23 +1,20 @@
 // `molmesh hierarchy`: atoms -> surface -> multilevel surface and volume meshes (GAMer
 // §4.3) with transfer operators, in one HDF5 file plus XDMF sidecars.
 #include <CLI/CLI.hpp>
-#include <charconv>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
-#include <map>
 #include <string>
-#include <vector>
 
 #include "command_registry.hpp"
 #include "molmesh/core/error.hpp"
 #include "molmesh/core/timing.hpp"
-#include "molmesh/core/version.hpp"
 #include "molmesh/hierarchy/build_hierarchy.hpp"
 #include "molmesh/io/hierarchy_hdf5.hpp"
 #include "molmesh/io/read_atoms.hpp"
 #include "molmesh/io/sha256.hpp"
 #include "molmesh/io/sphere_list.hpp"
+#include "molmesh/pipeline/hierarchy_parameters.hpp"
 #include "molmesh/pipeline/surface_pipeline.hpp"
 #include "option_checks.hpp"
 #include "surface_options.hpp"
@@ -36,19 +33,6 @@ struct HierarchyArgs {
   double size_growth = HierarchyOptions{}.size_growth;
   bool no_renumber = false;
 };
-
-// Shortest text that reads back to the same double (0.2, not 0.20000000000000001).
-std::string text(double v) {
-  char buffer[32];
-  const auto result = std::to_chars(buffer, buffer + sizeof buffer, v);
-  return std::string(buffer, result.ptr);
-}
-
-std::string join(const std::vector<double>& values) {
-  std::string out;
-  for (std::size_t i = 0; i < values.size(); ++i) out += (i ? "," : "") + text(values[i]);
-  return out;
-}
 
 void run(const HierarchyArgs& args, const CliContext& ctx) {
   const auto start = std::chrono::steady_clock::now();
@@ -81,37 +65,8 @@ void run(const HierarchyArgs& args, const CliContext& ctx) {
   Hierarchy hierarchy = build_hierarchy(surface.surface, atoms, options, reporter, &report);
   hierarchy.input_name = std::filesystem::path(args.input).filename().string();
   hierarchy.input_checksum = sha256_file(args.input);
-  auto& p = hierarchy.parameters;
-  p["t0"] = join(options.t0);
-  p["domain"] = args.volume.domain;
-  p["surface"] = surface_kind_name(pipeline.surface);
-  p["probe_radius"] = text(pipeline.probe_radius);
-  p["spacing"] = text(pipeline.blur.spacing);
-  p["blobbyness"] = text(pipeline.blur.blobbyness);
-  p["isovalue"] = text(pipeline.isovalue);
-  p["level"] = text(surface.level);
-  p["blur"] = pipeline.blur_method == BlurMethod::kFast ? "fast" : "exact";
-  p["min_cavity_volume"] = text(pipeline.min_cavity_volume);
-  p["alpha"] = text(pipeline.processing.alpha);
-  p["beta"] = text(pipeline.processing.beta);
-  p["rings"] = std::to_string(pipeline.processing.rings);
-  p["keep_spheres"] = pipeline.keep_spheres_file;
-  p["radii"] = args.surface.atoms.radii_file ? args.surface.atoms.radii_file->string() : "";
-  p["hetatm"] = args.surface.atoms.include_hetatm ? "yes" : "no";
-  p["waters"] = args.surface.atoms.include_waters ? "yes" : "no";
-  p["sphere_ratio"] = text(options.tetmesh.sphere_ratio);
-  p["outer_radius"] = text(report.outer_radius);
-  p["outer_sphere_subdivisions"] = std::to_string(options.tetmesh.outer_sphere_subdivisions);
-  p["active_site"] = args.volume.active_site;
-  p["active_site_spheres"] = std::to_string(options.tetmesh.active_site.size());
-  p["max_radius_edge_ratio"] = text(options.tetmesh.max_radius_edge_ratio);
-  p["min_dihedral_deg"] = text(options.tetmesh.min_dihedral_deg);
-  p["max_volume"] = options.tetmesh.max_volume ? text(*options.tetmesh.max_volume) : "none";
-  p["size_factor"] = text(options.tetmesh.size_factor);
-  p["size_growth"] = text(args.size_growth);
-  p["renumbering"] = args.no_renumber ? "none" : "reverse Cuthill-McKee";
-  if (!report.levels.empty()) p["tetgen_switches"] = report.levels.front().tetmesh.tetgen_switches;
-  p["molmesh_version"] = version();
+  hierarchy.parameters = hierarchy_parameters(options, report, args.volume.active_site,
+                                              HierarchySurfaceSource{args.surface.atoms, pipeline});
   write_hierarchy(args.output, hierarchy);
 
   const double seconds = seconds_since(start);

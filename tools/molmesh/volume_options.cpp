@@ -1,6 +1,7 @@
 #include "volume_options.hpp"
 
-#include <map>
+#include <string>
+#include <vector>
 
 #include "molmesh/io/sphere_list.hpp"
 #include "option_checks.hpp"
@@ -12,7 +13,11 @@ void add_volume_options(CLI::App& cmd, VolumeCliOptions& options,
   cmd.add_option("--domain", options.domain,
                  "interior: the molecule (region 1); exterior: the solvent between the "
                  "molecular surface and the outer sphere (region 2); full: both, conforming")
-      ->check(CLI::IsMember({"interior", "exterior", "full"}))
+      ->check(CLI::IsMember([] {
+        std::vector<std::string> names;
+        for (Domain d : kDomains) names.push_back(domain_name(d));
+        return names;
+      }()))
       ->capture_default_str();
   cmd.add_option("--sphere-ratio", options.tet.sphere_ratio,
                  "Outer sphere radius as a multiple of the molecule size (largest distance of "
@@ -58,10 +63,9 @@ void add_volume_options(CLI::App& cmd, VolumeCliOptions& options,
 }
 
 TetMeshOptions volume_options(const VolumeCliOptions& options, double max_memory_bytes) {
-  static const std::map<std::string, Domain> domains{
-      {"interior", Domain::interior}, {"exterior", Domain::exterior}, {"full", Domain::full}};
   TetMeshOptions out = options.tet;
-  out.domain = domains.at(options.domain);
+  for (Domain d : kDomains)
+    if (domain_name(d) == options.domain) out.domain = d;
   if (options.outer_radius > 0.0) out.outer_radius = options.outer_radius;
   if (options.max_volume > 0.0) out.max_volume = options.max_volume;
   if (!options.active_site.empty()) out.active_site = read_spheres(options.active_site);

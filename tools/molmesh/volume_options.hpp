@@ -10,7 +10,7 @@
 namespace molmesh::cli {
 
 struct VolumeCliOptions {
-  std::string domain = "full";
+  std::string domain = domain_name(TetMeshOptions{}.domain);
   TetMeshOptions tet;         // the fields below are its optional ones, as the CLI holds them
   double outer_radius = 0.0;  // Å; 0: from --sphere-ratio
   double max_volume = 0.0;    // Å³; 0: unbounded

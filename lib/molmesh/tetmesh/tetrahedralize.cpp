@@ -237,6 +237,18 @@ std::vector<double> mean_edge_lengths(const SurfaceMesh& s) {
 
 }  // namespace
 
+std::string domain_name(Domain domain) {
+  switch (domain) {
+    case Domain::interior:
+      return "interior";
+    case Domain::exterior:
+      return "exterior";
+    case Domain::full:
+      return "full";
+  }
+  return "full";
+}
+
 void TetMeshOptions::validate() const {
   auto require = [](bool ok, const std::string& what) {
     if (!ok) throw Error(what);

@@ -3,6 +3,7 @@
 // interior (every atom centre a mesh node), the solvent between the surface and a large
 // outer sphere, or both in one conforming mesh. The molecular surface is kept exactly as
 // given (no Steiner points on it), so the surface pipeline's quality carries over.
+#include <array>
 #include <cstddef>
 #include <optional>
 #include <string>
@@ -18,6 +19,12 @@
 namespace molmesh {
 
 enum class Domain { interior, exterior, full };
+
+// Every domain, for the front ends that spell them (CLI --domain, Python domain=).
+inline constexpr std::array<Domain, 3> kDomains{Domain::interior, Domain::exterior, Domain::full};
+
+// "interior", "exterior", "full": the spelling of --domain and of hierarchy files.
+std::string domain_name(Domain domain);
 
 // Largest outer sphere radius (Å): far enough for any molecule's far field (the default is
 // 40 x the molecule size); beyond, TetGen's predicates lose the molecule against the sphere
