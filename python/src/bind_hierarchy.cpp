@@ -11,6 +11,7 @@
 #include "hierarchy_objects.hpp"
 #include "molmesh/io/hierarchy_hdf5.hpp"
 #include "molmesh/pipeline/hierarchy_parameters.hpp"
+#include "molmesh/pipeline/report_json.hpp"
 #include "progress.hpp"
 #include "surface_objects.hpp"
 #include "tables.hpp"
@@ -210,22 +211,8 @@ void bind_hierarchy(py::module_& m) {
           out.hierarchy->input_name = read->source->name;
           out.hierarchy->input_checksum = read->source->checksum;
         }
-        py::list levels;
-        for (const HierarchyLevelReport& l : out.report.levels) {
-          py::dict d;
-          d["surface_seconds"] = l.surface_seconds;
-          d["volume_seconds"] = l.volume_seconds;
-          d["renumber_seconds"] = l.renumber_seconds;
-          d["transfer_seconds"] = l.transfer_seconds;
-          d["bandwidth_before"] = l.bandwidth_before;
-          d["bandwidth_after"] = l.bandwidth_after;
-          d["tetgen_switches"] = l.tetmesh.tetgen_switches;
-          levels.append(d);
-        }
-        py::dict report;
-        report["levels"] = levels;
-        report["outer_radius"] = out.report.outer_radius;
-        report["seconds"] = out.report.seconds;
+        // The keys of `molmesh hierarchy --stats`; parameters as the keyword values.
+        py::dict report = json_to_python(to_json(out.report).dump());
         report["parameters"] = parameters;
         return make_hierarchy(std::move(out.hierarchy), report);
       },

@@ -48,11 +48,7 @@ void bind_improve(py::module_& m) {
         nlohmann::json report;
         report["repair"] = to_json(result->repair);
         report["repair_seconds"] = result->repair_seconds;
-        report["stages"] = nlohmann::json::array();
-        for (const ProcessingStage& s : result->stages) {
-          report["stages"].push_back(
-              {{"name", s.name}, {"seconds", s.seconds}, {"stats", to_json(s.stats)}});
-        }
+        report["stages"] = to_json(result->stages);
         py::dict py_report = json_to_python(report.dump());
         py_report["parameters"] = improve_table().values(options);
         py::object repaired =

@@ -15,6 +15,7 @@
 #include "progress.hpp"
 #include "solvers/physics/hierarchy_solve.hpp"
 #include "solvers/physics/poisson.hpp"
+#include "solvers/physics/result_json.hpp"
 #include "solvers/physics/smoluchowski.hpp"
 #include "tables.hpp"
 #include "types.hpp"
@@ -101,22 +102,6 @@ py::array_t<double> to_array(const Eigen::VectorXd& v) {
   return out;
 }
 
-// The solver report with the keys of `molmesh solve --json`.
-py::dict report_dict(const solvers::SolveReport& r) {
-  py::dict d;
-  d["converged"] = r.converged;
-  d["iterations"] = r.iterations;
-  d["relative_residual"] = r.relative_residual;
-  d["residual_history"] = r.residual_history;
-  d["setup_time_s"] = r.setup_time_s;
-  d["solve_time_s"] = r.solve_time_s;
-  d["preconditioner"] = r.preconditioner;
-  d["level_unknowns"] = r.level_sizes;
-  d["level_nonzeros"] = r.level_nonzeros;
-  d["mesh_levels_used"] = r.mesh_levels;
-  return d;
-}
-
 struct PySolveResult {
   double rate_constant = std::numeric_limits<double>::quiet_NaN();
   double rate_constant_A3_per_s = std::numeric_limits<double>::quiet_NaN();
@@ -189,7 +174,6 @@ void bind_solvers(py::module_& m) {
         solvers::HierarchySmoluchowskiResult out = bridge.run([&](const Reporter& r) {
           return solvers::solve_smoluchowski(*hierarchy, setup.levels, options, ligand, r);
         });
-        const int outside = out.vertices_outside_potential_grid;
         PySolveResult result;
         result.rate_constant = out.result.rate_constant_per_molar_per_s;
         result.rate_constant_A3_per_s = out.result.rate_constant_A3_per_s;
@@ -197,14 +181,8 @@ void bind_solvers(py::module_& m) {
         if (!out.beta_w.empty())
           result.fields["beta_W"] =
               py::array_t<double>(static_cast<py::ssize_t>(out.beta_w.size()), out.beta_w.data());
-        result.report = report_dict(out.result.solve);
-        result.report["unknowns"] = out.result.unknowns;
-        result.report["absorbing_vertices"] = out.result.absorbing_vertices;
-        result.report["bulk_vertices"] = out.result.bulk_vertices;
-        result.report["isolated_cavity_vertices"] = out.result.isolated_vertices;
-        result.report["vertices_outside_potential_grid"] = outside;
-        result.report["rate_constant_A3_per_s"] = out.result.rate_constant_A3_per_s;
-        result.report["rate_constant_M-1s-1"] = out.result.rate_constant_per_molar_per_s;
+        // The keys of `molmesh solve smoluchowski --json` that the solve reports.
+        result.report = json_to_python(solvers::to_json(out).dump());
         py::dict parameters = setup_table().values(setup);
         parameters.attr("update")(smoluchowski_table().values(options));
         parameters.attr("update")(ligand_table().values(ligand));
@@ -248,14 +226,8 @@ void bind_solvers(py::module_& m) {
         result.solvation_energy = out.solvation_energy_kj_per_mol;
         result.fields["potential_kJ_per_mol_e"] = to_array(out.potential);
         result.fields["reaction_potential_kJ_per_mol_e"] = to_array(out.reaction_potential);
-        result.report = report_dict(out.solvated);
-        result.report["reference_solve"] = report_dict(out.reference);
-        result.report["iterations"] = out.solvated.iterations + out.reference.iterations;
-        result.report["converged"] = out.solvated.converged && out.reference.converged;
-        result.report["unknowns"] = out.unknowns;
-        result.report["charges"] = out.charges;
-        result.report["max_charge_offset_A"] = out.max_charge_offset;
-        result.report["solvation_energy_kJ_per_mol"] = out.solvation_energy_kj_per_mol;
+        // The keys of `molmesh solve poisson --json` that the solve reports.
+        result.report = json_to_python(solvers::to_json(out).dump());
         py::dict parameters = setup_table().values(setup);
         parameters.attr("update")(poisson_table().values(options));
         result.report["parameters"] = parameters;

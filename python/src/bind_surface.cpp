@@ -15,6 +15,7 @@
 #include "molmesh/io/surface_mesh_io.hpp"
 #include "molmesh/io/volume_io.hpp"
 #include "molmesh/io/vtu.hpp"
+#include "molmesh/pipeline/report_json.hpp"
 #include "molmesh/surface/surface_stats.hpp"
 #include "progress.hpp"
 #include "surface_objects.hpp"
@@ -43,16 +44,6 @@ SurfaceMesh surface_from_arrays(const py::object& vertices, const py::object& fa
   if (!mesh.face_markers.empty() && mesh.face_markers.size() != mesh.triangles.size())
     throw py::value_error("face_markers must have one value per face");
   return mesh;
-}
-
-nlohmann::json stages_json(const std::vector<StageRecord>& stages) {
-  nlohmann::json out = nlohmann::json::array();
-  for (const StageRecord& stage : stages) {
-    out.push_back({{"name", stage.name},
-                   {"seconds", stage.seconds},
-                   {"stats", stage.stats ? to_json(*stage.stats) : nlohmann::json()}});
-  }
-  return out;
 }
 
 }  // namespace
@@ -237,11 +228,8 @@ void bind_surface(py::module_& m) {
               atoms ? surface_from_atoms(*atoms, options, r)
                     : surface_from_grid(*grid, options, r));
         });
-        nlohmann::json report;
-        report["stages"] = stages_json(result->stages);
+        nlohmann::json report = surface_result_json(*result);
         report["grid_dims"] = atoms ? result->grid_dims : grid->dims;
-        report["dislocation_max"] = result->dislocation.max;
-        report["dislocation_mean"] = result->dislocation.mean;
         py::dict py_report = json_to_python(report.dump());
         py_report["parameters"] = surface_table().values(options);
         py_report["volume"] = py::none();

@@ -4,7 +4,7 @@ import numpy as np
 import pytest
 
 import molmesh
-from conftest import DATA, run_cli
+from conftest import DATA, read_json, run_cli
 
 T0 = [0.1, 0.3, 0.5]
 
@@ -13,7 +13,7 @@ T0 = [0.1, 0.3, 0.5]
 def cli_file(tmp_path_factory):
     out = tmp_path_factory.mktemp("hierarchy")
     run_cli("hierarchy", DATA / "1a1p.pqr", "-o", out / "h.h5", "--t0", ",".join(map(str, T0)),
-            "--domain", "exterior")
+            "--domain", "exterior", "--stats", out / "h.json")
     return out / "h.h5"
 
 
@@ -56,6 +56,21 @@ def test_parameters_are_the_clis(built, cli_file):
     assert built.parameters == cli.parameters
     assert built.parameters["t0"] == "0.1,0.3,0.5"
     assert (built.input_name, built.input_checksum) == (cli.input_name, cli.input_checksum)
+
+
+def test_report_is_the_clis_stats(built, cli_file):
+    """Hierarchy.report has the keys of `molmesh hierarchy --stats` (pipeline/report_json.hpp)
+    and the same TetGen runs; the CLI adds its input, its parameters are the file's."""
+    cli = read_json(cli_file.with_suffix(".json"))
+    assert set(built.report) == set(cli) - {"input"}
+    assert len(built.report["levels"]) == len(cli["levels"]) == len(T0)
+    for mine, theirs in zip(built.report["levels"], cli["levels"]):
+        assert set(mine) == set(theirs) and set(mine["tetgen"]) == set(theirs["tetgen"])
+        assert mine["tetgen"]["switches"] == theirs["tetgen"]["switches"]
+        assert mine["bandwidth_after"] == theirs["bandwidth_after"]
+        assert mine["volume_transfer"] == theirs["volume_transfer"]
+    assert built.report["outer_radius"] == cli["outer_radius"] > 0
+    assert cli["parameters"] == molmesh.read_hierarchy(cli_file).parameters
 
 
 def test_non_default_parameters_are_the_clis(tmp_path):

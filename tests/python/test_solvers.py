@@ -6,6 +6,13 @@ import pytest
 import molmesh
 from conftest import DATA, read_json, run_cli
 
+# What `molmesh solve --json` says of the command line rather than of the solve.
+COMMON_CLI_ONLY = {"problem", "engine", "hierarchy", "level", "vertices", "tetrahedra",
+                   "coarse_operators", "total_time_s"}
+SMOLUCHOWSKI_CLI_ONLY = COMMON_CLI_ONLY | {"absorbing", "diffusion_cm2_per_s", "potential",
+                                           "charge"}
+POISSON_CLI_ONLY = COMMON_CLI_ONLY | {"pqr", "pdie", "sdie"}
+
 
 @pytest.fixture(scope="module")
 def cli_hierarchy(tmp_path_factory):
@@ -30,6 +37,9 @@ def test_rate_is_the_clis(tmp_path, cli_hierarchy, hierarchy, level):
     assert result.rate_constant_A3_per_s == cli["rate_constant_A3_per_s"]
     assert result.iterations == cli["iterations"] and result.converged
     assert result.report["residual_history"] == cli["residual_history"]
+    # The solve's keys are one writer's (solvers/physics/result_json.hpp); the CLI adds its
+    # options and the problem's name.
+    assert set(result.report) - {"parameters"} == set(cli) - SMOLUCHOWSKI_CLI_ONLY
     c = result.fields["concentration"]
     assert c.shape == (len(hierarchy.levels[level].volume.vertices),)
     assert 0.0 <= c.min() and c.max() <= 1.0 + 1e-9
@@ -76,6 +86,8 @@ def test_solvation_energy_is_the_clis(tmp_path, cli_hierarchy, hierarchy):
     assert result.solvation_energy == cli["solvation_energy_kJ_per_mol"]
     assert result.solvation_energy < 0
     assert result.report["iterations"] == cli["iterations"]
+    assert set(result.report) - {"parameters"} == set(cli) - POISSON_CLI_ONLY
+    assert set(result.report["reference_solve"]) == set(cli["reference_solve"])
 
 
 def test_progress_can_abort_a_solve(hierarchy):

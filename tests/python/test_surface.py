@@ -33,6 +33,18 @@ def test_default_surface_is_the_clis_bit_for_bit(fas2_surface, fas2_cli_surface)
     assert [s["name"] for s in surf.report["stages"]] == [s["name"] for s in cli_stats["stages"]]
     assert [s["stats"] for s in surf.report["stages"]] == [s["stats"] for s in cli_stats["stages"]]
     assert surf.report["dislocation_max"] == cli_stats["dislocation_max"]
+    assert surf.report["levelset_distance_max"] == cli_stats["levelset_distance_max"]
+
+
+def test_stats_keys_are_the_clis(fas2_surface, fas2_cli_surface):
+    """Surface.stats() and .report together have the keys of `--stats` (one writer each:
+    io/stats_json.hpp, pipeline/report_json.hpp); the CLI adds its run's timings and input."""
+    _, cli_stats = fas2_cli_surface
+    surf = fas2_surface
+    python_keys = set(surf.stats()) | (set(surf.report) - {"grid_dims", "parameters", "volume"})
+    assert python_keys | {"timings_s", "input", "parameters"} == set(cli_stats)
+    assert set(surf.stats()) == set(STATS_KEYS)
+    assert [set(s) for s in surf.report["stages"]] == [set(s) for s in cli_stats["stages"]]
 
 
 def test_defaults_are_the_clis(fas2_cli_surface):

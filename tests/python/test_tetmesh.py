@@ -31,6 +31,9 @@ def test_tetmesh_is_the_clis(full, cli_full):
     assert stats == {k: cli_stats[k] for k in stats}
     tetgen = dict(full.report["tetgen"], seconds=None)
     assert tetgen == dict(cli_stats["tetgen"], seconds=None)
+    # The same keys: TetMesh.stats() is the --stats document's metrics (io/stats_json.hpp),
+    # report["tetgen"] its tetgen object; the CLI adds domain, timings, input, parameters.
+    assert set(stats) | {"tetgen", "domain", "timings_s", "input", "parameters"} == set(cli_stats)
     assert np.array_equal(full.tetrahedra, cli_mesh.tetrahedra)
     assert np.array_equal(full.cell_markers, cli_mesh.cell_markers)
     # MCSF stores 11 significant digits.

@@ -14,7 +14,9 @@
 #include "molmesh/io/read_atoms.hpp"
 #include "molmesh/io/sha256.hpp"
 #include "molmesh/io/sphere_list.hpp"
+#include "molmesh/io/stats_json.hpp"
 #include "molmesh/pipeline/hierarchy_parameters.hpp"
+#include "molmesh/pipeline/report_json.hpp"
 #include "molmesh/pipeline/surface_pipeline.hpp"
 #include "option_checks.hpp"
 #include "surface_options.hpp"
@@ -26,6 +28,7 @@ namespace {
 struct HierarchyArgs {
   std::string input;
   std::string output;
+  std::string stats;
   // Atoms, surface and processing: the shared layer (surface_options.hpp). Its coarsening
   // thresholds are the levels' T0 here (HierarchyOptions::t0 by default).
   SurfaceCliOptions surface;
@@ -68,6 +71,12 @@ void run(const HierarchyArgs& args, const CliContext& ctx) {
   hierarchy.parameters = hierarchy_parameters(options, report, args.volume.active_site,
                                               HierarchySurfaceSource{args.surface.atoms, pipeline});
   write_hierarchy(args.output, hierarchy);
+  if (!args.stats.empty()) {
+    nlohmann::json document = to_json(report);
+    document["input"] = {{"path", args.input}, {"atoms", atoms.size()}, {"output", args.output}};
+    document["parameters"] = hierarchy.parameters;
+    write_json_file(args.stats, document);
+  }
 
   const double seconds = seconds_since(start);
   if (!ctx.quiet) {
@@ -101,6 +110,10 @@ const CommandRegistration registration{
              "are written beside it")
           ->required()
           ->check(output_extension({".h5"}));
+      cmd->add_option("--stats", args->stats,
+                      "Write what each level took (seconds, bandwidths, TetGen), the outer "
+                      "radius and the parameters as JSON to this file")
+          ->type_name("FILE.json");
       args->surface.pipeline.processing.t0 = HierarchyOptions{}.t0;
       add_surface_options(*cmd, args->surface);
       // Every level is processed by the hierarchy itself, so there is no raw surface to

@@ -10,6 +10,7 @@
 #include "molmesh/io/stats_json.hpp"
 #include "molmesh/io/surface_mesh_io.hpp"
 #include "molmesh/io/volume_io.hpp"
+#include "molmesh/pipeline/report_json.hpp"
 #include "molmesh/pipeline/surface_pipeline.hpp"
 #include "option_checks.hpp"
 #include "surface_options.hpp"
@@ -79,22 +80,7 @@ void run(const SurfaceArgs& args, const CliContext& ctx) {
     input["output"] = args.output;
     nlohmann::json document =
         stats_document(stats, timings, input, surface_parameters_json(args.options));
-    document["dislocation_max"] = result.dislocation.max;
-    document["dislocation_mean"] = result.dislocation.mean;
-    if (result.level_set_distance) {
-      const LevelSetDistance& d = *result.level_set_distance;
-      document["levelset_distance_mean"] = d.vertex_mean;
-      document["levelset_distance_max"] = d.vertex_max;
-      document["centroid_distance_mean"] = d.centroid_mean;
-      document["centroid_distance_max"] = d.centroid_max;
-    }
-    nlohmann::json stages = nlohmann::json::array();
-    for (const StageRecord& stage : result.stages) {
-      stages.push_back({{"name", stage.name},
-                        {"seconds", stage.seconds},
-                        {"stats", stage.stats ? to_json(*stage.stats) : nlohmann::json()}});
-    }
-    document["stages"] = std::move(stages);
+    document.update(surface_result_json(result));
     write_json_file(args.stats, document);
   }
 }

@@ -20,6 +20,7 @@
 #include "molmesh/io/read_atoms.hpp"
 #include "molmesh/io/volume_io.hpp"
 #include "solvers/physics/hierarchy_solve.hpp"
+#include "solvers/physics/result_json.hpp"
 
 namespace molmesh::cli {
 namespace {
@@ -116,21 +117,6 @@ solvers::LinearSolverOptions solver_options(const CommonArgs& a) {
   return o;
 }
 
-nlohmann::json report_json(const solvers::SolveReport& r) {
-  return {{"converged", r.converged},
-          {"iterations", r.iterations},
-          {"relative_residual", r.relative_residual},
-          {"residual_history", r.residual_history},
-          {"setup_time_s", r.setup_time_s},
-          {"solve_time_s", r.solve_time_s},
-          {"time_s", r.setup_time_s + r.solve_time_s},
-          {"preconditioner", r.preconditioner},
-          {"levels_used", r.level_sizes.empty() ? 1 : r.level_sizes.size()},
-          {"level_unknowns", r.level_sizes},
-          {"level_nonzeros", r.level_nonzeros},
-          {"mesh_levels_used", r.mesh_levels}};
-}
-
 // What every result names: the problem, the engine, the level and its size.
 void add_problem_json(nlohmann::json& j, const char* problem, const CommonArgs& a,
                       const SolveEngine& engine, const TetMesh& mesh, int unknowns) {
@@ -180,19 +166,13 @@ void run_smoluchowski(const SmoluchowskiArgs& args, const CliContext& ctx,
                 Eigen::Map<const Eigen::VectorXd>(solved.beta_w.data(),
                                                   static_cast<Eigen::Index>(solved.beta_w.size())));
   }
-  nlohmann::json j = report_json(result.solve);
+  nlohmann::json j = solvers::to_json(solved);
   add_problem_json(j, "steady-state Smoluchowski", args.common, engine, mesh, result.unknowns);
   j["absorbing"] = args.absorbing;
   j["coarse_operators"] = args.common.coarse_operators;
-  j["absorbing_vertices"] = result.absorbing_vertices;
-  j["bulk_vertices"] = result.bulk_vertices;
-  j["isolated_cavity_vertices"] = result.isolated_vertices;
   j["diffusion_cm2_per_s"] = args.diffusion;
   j["potential"] = args.potential.empty() ? nlohmann::json() : nlohmann::json(args.potential);
   j["charge"] = args.charge;
-  j["vertices_outside_potential_grid"] = solved.vertices_outside_potential_grid;
-  j["rate_constant_A3_per_s"] = result.rate_constant_A3_per_s;
-  j["rate_constant_M-1s-1"] = result.rate_constant_per_molar_per_s;
   j["total_time_s"] = seconds_since(start);
   write_json(args.common.json, j);
   std::printf("rate constant %.6e M^-1 s^-1 (%d CG iterations, relative residual %.2e, %.2f s)\n",
@@ -218,22 +198,13 @@ void run_poisson(const PoissonArgs& args, const CliContext& ctx, const SolveEngi
   const TetMesh& mesh = hierarchy.levels[static_cast<std::size_t>(args.common.level)].volume;
   store_field(args.common, "potential_kJ_per_mol_e", result.potential);
   store_field(args.common, "reaction_potential_kJ_per_mol_e", result.reaction_potential);
-  nlohmann::json j = report_json(result.solvated);
+  nlohmann::json j = solvers::to_json(result);
   add_problem_json(j, "Poisson solvation energy (reference-solve method)", args.common, engine,
                    mesh, result.unknowns);
   j["pqr"] = args.pqr;
   j["pdie"] = args.pdie;
   j["sdie"] = args.sdie;
   j["coarse_operators"] = args.common.coarse_operators;
-  j["charges"] = result.charges;
-  j["max_charge_offset_A"] = result.max_charge_offset;
-  j["reference_solve"] = report_json(result.reference);
-  j["iterations"] = result.solvated.iterations + result.reference.iterations;
-  j["relative_residual"] =
-      std::max(result.solvated.relative_residual, result.reference.relative_residual);
-  j["time_s"] = result.solvated.setup_time_s + result.solvated.solve_time_s +
-                result.reference.setup_time_s + result.reference.solve_time_s;
-  j["solvation_energy_kJ_per_mol"] = result.solvation_energy_kj_per_mol;
   j["total_time_s"] = seconds_since(start);
   write_json(args.common.json, j);
   if (result.max_charge_offset > 1e-3) {

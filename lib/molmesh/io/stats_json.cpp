@@ -67,6 +67,13 @@ nlohmann::json to_json(const MeshRepairReport& r) {
   return j;
 }
 
+nlohmann::json to_json(const std::vector<ProcessingStage>& stages) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const ProcessingStage& s : stages)
+    out.push_back({{"name", s.name}, {"seconds", s.seconds}, {"stats", to_json(s.stats)}});
+  return out;
+}
+
 nlohmann::json to_json(const TetMeshReport& report) {
   nlohmann::json tetgen;
   tetgen["switches"] = report.tetgen_switches;

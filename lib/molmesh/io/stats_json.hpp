@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "molmesh/processing/mesh_repair.hpp"
+#include "molmesh/processing/process_surface.hpp"
 #include "molmesh/surface/surface_stats.hpp"
 #include "molmesh/tetmesh/tet_stats.hpp"
 #include "molmesh/tetmesh/tetrahedralize.hpp"
@@ -22,6 +23,8 @@ nlohmann::json to_json(const SurfaceStats& stats);
 nlohmann::json to_json(const TetStats& stats);
 // What `molmesh improve` repaired (the "repair" object of its --stats).
 nlohmann::json to_json(const MeshRepairReport& report);
+// The "stages" array of molmesh.improve's report: name, seconds, stats of each stage.
+nlohmann::json to_json(const std::vector<ProcessingStage>& stages);
 // The "tetgen" object of `molmesh tetmesh --stats`: switches, timing, atoms as nodes.
 nlohmann::json to_json(const TetMeshReport& report);
 SurfaceStats surface_stats_from_json(const nlohmann::json& json);
