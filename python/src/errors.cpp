@@ -1,6 +1,7 @@
 #include "errors.hpp"
 
 #include <exception>
+#include <map>
 #include <string>
 
 #include "molmesh/core/error.hpp"
@@ -29,6 +30,22 @@ PyObject* new_type(py::module_& m, const char* name, py::tuple bases, const char
 
 void raise(PyObject* type, const char* message) { PyErr_SetString(type, message); }
 
+// The library names options by their struct members (core/error.hpp); a Python message
+// names the keyword argument where the two differ.
+std::string with_keywords(const char* message) {
+  static const std::map<std::string, std::string, std::less<>> kKeywords{
+      {"max_levels", "`levels`"},
+      {"max_radius_edge_ratio", "`max_radius_edge`"},
+      {"min_dihedral_deg", "`min_dihedral`"},
+      {"outer_sphere_subdivisions", "`sphere_subdivisions`"},
+      {"radii_file", "`radii`"},
+  };
+  return spell_option_names(message, [](std::string_view name) -> std::string {
+    const auto it = kKeywords.find(name);
+    return it == kKeywords.end() ? std::string() : it->second;
+  });
+}
+
 }  // namespace
 
 PyObject* warning_type() { return g_warning; }
@@ -53,14 +70,15 @@ void bind_errors(py::module_& m) {
     try {
       if (p) std::rethrow_exception(p);
     } catch (const InputError& e) {
-      py::object instance = py::reinterpret_borrow<py::object>(g_input_error)(e.what());
+      py::object instance =
+          py::reinterpret_borrow<py::object>(g_input_error)(with_keywords(e.what()));
       instance.attr("file") = e.file().empty() ? py::object(py::none()) : py::str(e.file());
       instance.attr("line") = e.line() == 0 ? py::object(py::none()) : py::int_(e.line());
       PyErr_SetObject(g_input_error, instance.ptr());
     } catch (const OutputError& e) {
-      raise(g_output_error, e.what());
+      raise(g_output_error, with_keywords(e.what()).c_str());
     } catch (const Error& e) {
-      raise(g_error, e.what());
+      raise(g_error, with_keywords(e.what()).c_str());
     }
   });
 }

@@ -12,10 +12,10 @@ SolveLevels solve_levels(const Hierarchy& hierarchy, const HierarchySolveOptions
                          Preconditioning preconditioning) {
   const int levels = static_cast<int>(hierarchy.levels.size());
   if (options.level < 0 || options.level >= levels) {
-    throw Error("--level " + std::to_string(options.level) + ": the hierarchy has " +
+    throw Error("`level` " + std::to_string(options.level) + ": the hierarchy has " +
                 std::to_string(levels) + " level(s) (0.." + std::to_string(levels - 1) + ")");
   }
-  if (options.max_levels < 0) throw Error("--levels must not be negative");
+  if (options.max_levels < 0) throw Error("`max_levels` must not be negative");
   SolveLevels out;
   out.mesh = &hierarchy.levels[static_cast<std::size_t>(options.level)].volume;
   int last = levels - 1;

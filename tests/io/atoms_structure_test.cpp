@@ -181,7 +181,7 @@ const char* kIronPdb =
 
 TEST(Structure, ElementWithoutRadiusNamesTheLine) {
   const auto path = write_text("heme.pdb", std::string("REMARK test\n") + kIronPdb);
-  expect_input_error([&] { read_atoms(path); }, {"heme.pdb:2:", "FE", "--radii"});
+  expect_input_error([&] { read_atoms(path); }, {"heme.pdb:2:", "FE", "`radii_file`"});
   AtomReadOptions protein_only;
   protein_only.include_hetatm = false;
   expect_input_error([&] { read_atoms(path, protein_only); }, {"excluded"});

@@ -103,5 +103,8 @@ def test_progress_can_abort_a_solve(hierarchy):
 
 
 def test_bad_level_is_an_error(hierarchy):
-    with pytest.raises(molmesh.Error, match="level 7"):
+    # The library's option name, which is the keyword too (the CLI says --level 7).
+    with pytest.raises(molmesh.Error, match="^`level` 7: the hierarchy has 3 level"):
         molmesh.solve_smoluchowski(hierarchy, level=7)
+    with pytest.raises(molmesh.Error, match="^`levels` must not be negative"):
+        molmesh.solve_smoluchowski(hierarchy, levels=-1)

@@ -82,3 +82,12 @@ def test_open_surface_is_an_error(full):
     holed = molmesh.Surface(s.vertices, s.faces[:-20])
     with pytest.raises(molmesh.Error):
         molmesh.tetmesh(holed)
+
+
+def test_option_errors_name_the_keyword(full):
+    """The library names its own option (max_radius_edge_ratio); Python says the keyword."""
+    with pytest.raises(molmesh.Error, match="`max_radius_edge`") as info:
+        molmesh.tetmesh(full.report["surface"], max_radius_edge=0.5)
+    assert "--" not in str(info.value) and "max_radius_edge_ratio" not in str(info.value)
+    with pytest.raises(molmesh.Error, match="`size_factor`"):
+        molmesh.tetmesh(full.report["surface"], size_factor=-1.0)

@@ -145,8 +145,9 @@ TEST(TetgenInput, TinySizeFactorIsRefusedByTheMemoryEstimate) {
   TetMeshOptions o = interior();
   o.size_factor = 1e-3;
   const std::string message = error_of(ion, o);
-  EXPECT_NE(message.find("--max-memory"), std::string::npos) << message;
-  EXPECT_NE(message.find("--size-factor"), std::string::npos) << message;
+  EXPECT_NE(message.find("`max_memory_bytes`"), std::string::npos) << message;
+  EXPECT_NE(message.find("`size_factor`"), std::string::npos) << message;
+  EXPECT_EQ(message.find("--"), std::string::npos) << message;  // no CLI flag in the library
 }
 
 TEST(TetgenInput, CliFas2AtBlobbyness2IsNoCrash) {

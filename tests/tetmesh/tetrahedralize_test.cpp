@@ -224,7 +224,9 @@ TEST(Tetrahedralize, RejectsBadInputWithActionableErrors) {
     tetrahedralize(ion, atoms_at({Vec3::Zero()}), o);
     FAIL() << "expected an error";
   } catch (const Error& e) {
-    EXPECT_NE(std::string(e.what()).find("--outer-radius"), std::string::npos);
+    // The library's own option name; the CLI says --outer-radius (option_spelling.cpp).
+    EXPECT_NE(std::string(e.what()).find("`outer_radius`"), std::string::npos) << e.what();
+    EXPECT_EQ(std::string(e.what()).find("--"), std::string::npos) << e.what();
   }
   o.outer_radius = 2.0;  // inside the ion surface
   EXPECT_THROW(tetrahedralize(ion, atoms_at({Vec3::Zero()}), o), Error);

@@ -15,6 +15,7 @@
 
 #include "cli_context.hpp"
 #include "molmesh/core/error.hpp"
+#include "option_spelling.hpp"
 #include "solve_command.hpp"
 #include "solvers/petsc/petsc_engine.hpp"
 
@@ -74,13 +75,16 @@ int main(int argc, char** argv) {
     status = rank == 0 ? (app.exit(e) == 0 ? kSuccess : kUsage)
                        : (e.get_exit_code() == 0 ? kSuccess : kUsage);
   } catch (const molmesh::InputError& e) {
-    std::fprintf(stderr, "molmesh-petsc: error: %s\n", e.what());
+    std::fprintf(stderr, "molmesh-petsc: error: %s\n",
+                 molmesh::cli::with_cli_flags(e.what()).c_str());
     status = kInputError;
   } catch (const molmesh::OutputError& e) {
-    std::fprintf(stderr, "molmesh-petsc: error: %s\n", e.what());
+    std::fprintf(stderr, "molmesh-petsc: error: %s\n",
+                 molmesh::cli::with_cli_flags(e.what()).c_str());
     status = kOutputError;
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "molmesh-petsc: error: %s\n", e.what());
+    std::fprintf(stderr, "molmesh-petsc: error: %s\n",
+                 molmesh::cli::with_cli_flags(e.what()).c_str());
     status = kFailure;
   }
   PetscFinalize();

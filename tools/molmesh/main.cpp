@@ -10,6 +10,7 @@
 #include "molmesh/core/atomic_file.hpp"
 #include "molmesh/core/error.hpp"
 #include "molmesh/core/version.hpp"
+#include "option_spelling.hpp"
 
 int main(int argc, char** argv) {
   using namespace molmesh::cli;
@@ -28,13 +29,13 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     return app.exit(e) == 0 ? kSuccess : kUsage;
   } catch (const molmesh::InputError& e) {
-    std::fprintf(stderr, "molmesh: error: %s\n", e.what());
+    std::fprintf(stderr, "molmesh: error: %s\n", with_cli_flags(e.what()).c_str());
     return kInputError;
   } catch (const molmesh::OutputError& e) {
-    std::fprintf(stderr, "molmesh: error: %s\n", e.what());
+    std::fprintf(stderr, "molmesh: error: %s\n", with_cli_flags(e.what()).c_str());
     return kOutputError;
   } catch (const molmesh::Error& e) {
-    std::fprintf(stderr, "molmesh: error: %s\n", e.what());
+    std::fprintf(stderr, "molmesh: error: %s\n", with_cli_flags(e.what()).c_str());
     return kFailure;
   } catch (const std::bad_alloc&) {
     std::fprintf(stderr, "molmesh: error: out of memory (try a coarser --spacing)\n");

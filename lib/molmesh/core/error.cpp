@@ -1,5 +1,7 @@
 #include "molmesh/core/error.hpp"
 
+#include <algorithm>
+
 namespace molmesh {
 namespace {
 
@@ -37,5 +39,32 @@ InputError::InputError(const std::string& file, std::size_t line, const std::str
 
 InputError::InputError(const std::string& file, const std::string& message)
     : Error(located(file, 0, message)), file_(file) {}
+
+std::string spell_option_names(std::string_view message,
+                               const std::function<std::string(std::string_view)>& spell) {
+  const auto is_name_char = [](char c) {
+    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_';
+  };
+  std::string out;
+  std::size_t i = 0;
+  while (i < message.size()) {
+    const std::size_t open = message.find('`', i);
+    if (open == std::string_view::npos) break;
+    std::size_t close = open + 1;
+    while (close < message.size() && is_name_char(message[close])) ++close;
+    out.append(message.substr(i, open - i));
+    if (close < message.size() && message[close] == '`' && close > open + 1) {
+      const std::string_view name = message.substr(open + 1, close - open - 1);
+      const std::string spelled = spell(name);
+      out.append(spelled.empty() ? message.substr(open, close - open + 1) : spelled);
+      i = close + 1;
+    } else {
+      out += '`';
+      i = open + 1;
+    }
+  }
+  out.append(message.substr(std::min(i, message.size())));
+  return out;
+}
 
 }  // namespace molmesh

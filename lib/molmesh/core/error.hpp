@@ -1,9 +1,16 @@
 #pragma once
 // Errors are exceptions carrying a message a user can act on. The CLI prints what() on
 // one line and maps the type to an exit code (docs/cli.md).
+//
+// A message names an option the way the library spells it: its member in the options
+// struct, backquoted (`size_factor`, `max_memory_bytes`, `level`), never a front end's
+// flag or keyword. The CLI and the Python module put their own spelling in its place with
+// spell_option_names().
 #include <cstddef>
+#include <functional>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 
 namespace molmesh {
 
@@ -33,5 +40,10 @@ class OutputError : public Error {
  public:
   using Error::Error;
 };
+
+// `message` with each backquoted option name (`name`: letters, digits, '_') replaced by
+// spell(name); names spell() returns empty for are left as they are.
+std::string spell_option_names(std::string_view message,
+                               const std::function<std::string(std::string_view)>& spell);
 
 }  // namespace molmesh

@@ -34,7 +34,7 @@ void check_memory(double bytes, double limit, const std::string& what, const std
   if (bytes <= limit) return;
   throw Error(
       what + " would need " + (std::isfinite(bytes) ? format_bytes(bytes) : "unbounded memory") +
-      ", more than the memory limit of " + format_bytes(limit) + " (--max-memory); " + hint);
+      ", more than the memory limit of " + format_bytes(limit) + " (`max_memory_bytes`); " + hint);
 }
 
 }  // namespace molmesh

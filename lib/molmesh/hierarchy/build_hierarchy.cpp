@@ -33,7 +33,7 @@ Hierarchy build_hierarchy(const SurfaceMesh& surface, const Atoms& atoms,
                           const HierarchyOptions& options, const Reporter& reporter,
                           HierarchyReport* report) {
   const auto start = std::chrono::steady_clock::now();
-  if (options.t0.empty()) throw Error("hierarchy: give at least one T0 value (--t0)");
+  if (options.t0.empty()) throw Error("hierarchy: give at least one T0 value (`t0`)");
   for (std::size_t i = 0; i < options.t0.size(); ++i) {
     if (!(options.t0[i] >= 0.0)) throw Error("hierarchy: T0 values must be >= 0");
     if (i > 0 && options.t0[i] < options.t0[i - 1]) {

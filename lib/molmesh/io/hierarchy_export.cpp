@@ -16,7 +16,7 @@ std::vector<std::filesystem::path> export_hierarchy(const Hierarchy& hierarchy,
                                                     const ExportOptions& options) {
   const int levels = static_cast<int>(hierarchy.levels.size());
   if (options.level >= levels || options.level < -1) {
-    throw Error("--level " + std::to_string(options.level) + ": the hierarchy has " +
+    throw Error("`level` " + std::to_string(options.level) + ": the hierarchy has " +
                 std::to_string(levels) + " level(s) (0.." + std::to_string(levels - 1) + ")");
   }
   const std::string stem = prefix.string();

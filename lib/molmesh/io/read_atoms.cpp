@@ -101,7 +101,8 @@ Atoms read_atoms(const std::filesystem::path& path, const AtomReadOptions& optio
                 ? "has no element symbol (none in the file, and the name does not identify one)"
                 : "has element " + atom.element + ", which has no radius in the built-in table";
         throw InputError(name, i < lines.size() ? lines[i] : 0,
-                         describe(atom) + " " + what + "; give one with --radii FILE (a line '" +
+                         describe(atom) + " " + what +
+                             "; give one in a radius table (`radii_file`; a line '" +
                              (atom.element.empty() ? std::string("*") : to_upper(atom.element)) +
                              " 1.80', see docs/formats.md) or exclude HETATM records");
       }

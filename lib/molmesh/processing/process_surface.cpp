@@ -91,7 +91,7 @@ namespace {
 
 ProcessingResult process_centred(const SurfaceMesh& input, const ProcessingOptions& options,
                                  const Reporter& reporter) {
-  if (options.rings < 1) throw Error("--rings must be at least 1");
+  if (options.rings < 1) throw Error("`rings` must be at least 1");
   for (double t0 : options.t0) {
     if (!(t0 >= 0) || !std::isfinite(t0)) throw Error("coarsening threshold T0 must be >= 0");
   }

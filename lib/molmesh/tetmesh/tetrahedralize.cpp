@@ -254,26 +254,27 @@ void TetMeshOptions::validate() const {
     if (!ok) throw Error(what);
   };
   require(std::isfinite(sphere_ratio) && sphere_ratio > 0.0 && sphere_ratio <= 1e4,
-          "the sphere ratio (--sphere-ratio) must be a finite number in (0, 10000]");
+          "the sphere ratio (`sphere_ratio`) must be a finite number in (0, 10000]");
   if (outer_radius)
     require(std::isfinite(*outer_radius) && *outer_radius > 0.0 && *outer_radius <= kMaxOuterRadius,
-            "the outer sphere radius (--outer-radius) must be a finite number in (0, " +
+            "the outer sphere radius (`outer_radius`) must be a finite number in (0, " +
                 format_number(kMaxOuterRadius) + "] Å");
   require(outer_sphere_subdivisions >= 0 && outer_sphere_subdivisions <= 7,
-          "the outer sphere subdivision level must be 0..7");
+          "the outer sphere subdivision level (`outer_sphere_subdivisions`) must be 0..7");
   require(std::isfinite(max_radius_edge_ratio) && max_radius_edge_ratio >= 1.0 &&
               max_radius_edge_ratio <= 1e3,
-          "the radius-edge bound (--max-radius-edge) must be a finite number in [1, 1000] "
+          "the radius-edge bound (`max_radius_edge_ratio`) must be a finite number in [1, 1000] "
           "(TetGen may not terminate below 1)");
-  require(std::isfinite(min_dihedral_deg) && min_dihedral_deg >= 0.0 && min_dihedral_deg <= 70.0,
-          "the minimum dihedral angle (--min-dihedral) must be a finite number in [0, 70] degrees");
+  require(
+      std::isfinite(min_dihedral_deg) && min_dihedral_deg >= 0.0 && min_dihedral_deg <= 70.0,
+      "the minimum dihedral angle (`min_dihedral_deg`) must be a finite number in [0, 70] degrees");
   if (max_volume)
     require(std::isfinite(*max_volume) && *max_volume > 0.0,
-            "the maximum tetrahedron volume (--max-volume) must be a finite positive number");
+            "the maximum tetrahedron volume (`max_volume`) must be a finite positive number");
   require(std::isfinite(size_factor) && size_factor >= 0.0 && size_factor <= 1e3,
-          "the size factor (--size-factor) must be a finite number in [0, 1000] (0: no grading)");
+          "the size factor (`size_factor`) must be a finite number in [0, 1000] (0: no grading)");
   require(std::isfinite(max_memory_bytes) && max_memory_bytes > 0.0,
-          "the memory limit (--max-memory) must be positive");
+          "the memory limit (`max_memory_bytes`) must be positive");
   for (const auto& s : active_site)
     require(s.center.allFinite() && std::isfinite(s.radius) && s.radius >= 0.0,
             "an active-site sphere has a non-finite centre or radius");
@@ -305,7 +306,7 @@ static TetMesh tetrahedralize_centred(const SurfaceMesh& surface, const Atoms& a
       if (!(radius > 0.0))
         throw Error(
             "the molecule has zero size (a single atom?): give the outer sphere "
-            "radius explicitly (--outer-radius)");
+            "radius explicitly (`outer_radius`)");
     }
     double surface_reach = 0.0;
     for (const auto& p : surface.points)
@@ -373,8 +374,8 @@ static TetMesh tetrahedralize_centred(const SurfaceMesh& surface, const Atoms& a
                               (h_mean * h_mean * h_mean);
     check_memory(tetrahedra * kBytesPerTetrahedron, options.max_memory_bytes,
                  "the tetrahedral mesh (about " + format_number(tetrahedra) +
-                     " tetrahedra at --size-factor " + format_number(options.size_factor) + ")",
-                 "raise --size-factor");
+                     " tetrahedra at `size_factor` " + format_number(options.size_factor) + ")",
+                 "raise `size_factor`");
   }
 
   // Atom centres become nodes of the molecule's part. They go into the PLC as isolated
@@ -429,7 +430,7 @@ static TetMesh tetrahedralize_centred(const SurfaceMesh& surface, const Atoms& a
   } else {
     switches = options.tetgen_switches;
     if (switches.find_first_of("rRwmk") != std::string::npos)
-      throw Error("--tetgen-switches: r, R, w, m and k are not supported (molmesh meshes a PLC)");
+      throw Error("`tetgen_switches`: r, R, w, m and k are not supported (molmesh meshes a PLC)");
     if (switches.find('p') == std::string::npos) switches.insert(0, "p");
   }
   for (char c : std::string("znQ"))
@@ -444,8 +445,8 @@ static TetMesh tetrahedralize_centred(const SurfaceMesh& surface, const Atoms& a
     const double tetrahedra = domain_volume / *options.max_volume;
     check_memory(tetrahedra * kBytesPerTetrahedron, options.max_memory_bytes,
                  "the tetrahedral mesh (at least " + format_number(tetrahedra) +
-                     " tetrahedra at --max-volume " + format_number(*options.max_volume) + ")",
-                 "raise --max-volume");
+                     " tetrahedra at `max_volume` " + format_number(*options.max_volume) + ")",
+                 "raise `max_volume`");
   }
 
   tetgenbehavior behavior;

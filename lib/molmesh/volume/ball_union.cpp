@@ -37,7 +37,7 @@ Grid ball_union_grid(const Atoms& atoms, double grow, double spacing, int margin
     const double n = last - first + 1;
     cells *= n;
     if (n > 1e6 || cells > 4e9)
-      throw Error("the distance-field grid would have more than 4e9 samples; increase --spacing");
+      throw Error("the distance-field grid would have more than 4e9 samples; increase `spacing`");
     grid.dims[axis] = static_cast<int>(n);
   }
   return grid;
@@ -51,7 +51,7 @@ void ball_union_onto(const Atoms& atoms, double grow, Grid& grid, const Reporter
   } catch (const std::bad_alloc&) {
     throw Error("not enough memory for a " + std::to_string(grid.dims[0]) + " x " +
                 std::to_string(grid.dims[1]) + " x " + std::to_string(grid.dims[2]) +
-                " distance grid; increase --spacing");
+                " distance grid; increase `spacing`");
   }
   // Atoms whose reach (ball + two cells) touches each z-plane; a plane is written by one
   // task only, and max() is exact and order-free, so the result is thread-count independent.

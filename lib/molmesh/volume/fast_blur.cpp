@@ -207,7 +207,7 @@ Grid fast_blur(const Atoms& atoms, const BlurOptions& options, SplatMethod splat
     if (samples > double(std::numeric_limits<std::int32_t>::max()) / 4) {
       throw Error("the grid of " + std::to_string(grid.dims[0]) + " x " +
                   std::to_string(grid.dims[1]) + " x " + std::to_string(grid.dims[2]) +
-                  " samples is too large; use a coarser --spacing");
+                  " samples is too large; use a coarser `spacing`");
     }
     fast_blur_onto(atoms, fast, grid, reporter);
     if (!reaches_boundary(grid, options.isovalue)) return grid;

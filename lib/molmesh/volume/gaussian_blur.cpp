@@ -162,7 +162,7 @@ void check_grid_memory(const std::array<double, 3>& extent, double h, double max
   std::snprintf(spacing, sizeof spacing, "%g", h);
   check_memory(extent[0] * extent[1] * extent[2] * sizeof(double), max_memory_bytes,
                "the grid of " + format_extent(extent) + " samples (spacing " + spacing + " Å)",
-               "use a coarser --spacing, or check the coordinates (atoms far apart)");
+               "use a coarser `spacing`, or check the coordinates (atoms far apart)");
 }
 
 void check_blur_options(const BlurOptions& options) {
@@ -232,12 +232,12 @@ Grid blur_atoms(const Atoms& atoms, const BlurOptions& options, const Reporter& 
     const double samples = double(grid.dims[0]) * grid.dims[1] * grid.dims[2];
     if (samples > double(std::numeric_limits<std::int32_t>::max()) / 4)
       throw Error("the grid of " + grid_size_text(grid.dims) +
-                  " samples is too large; use a coarser --spacing");
+                  " samples is too large; use a coarser `spacing`");
     try {
       grid.values.assign(grid.size(), 0.0);
     } catch (const std::bad_alloc&) {
       throw Error("not enough memory for a grid of " + grid_size_text(grid.dims) +
-                  " samples; use a coarser --spacing");
+                  " samples; use a coarser `spacing`");
     }
     reporter.progress("blur", 0.0);
     accumulate(grid, atoms, active, blob, cutoff_value, reporter);

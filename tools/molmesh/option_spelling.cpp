@@ -1,0 +1,35 @@
+#include "option_spelling.hpp"
+
+#include <map>
+
+#include "molmesh/core/error.hpp"
+
+namespace molmesh::cli {
+
+std::string with_cli_flags(std::string_view message) {
+  // Library option (its struct member) -> flag. Members whose flag is not simply the name
+  // with '_' -> '-' are the reason for the table; unknown names stay backquoted.
+  static const std::map<std::string, std::string, std::less<>> kFlags{
+      {"level", "--level"},
+      {"max_levels", "--levels"},
+      {"max_memory_bytes", "--max-memory"},
+      {"max_radius_edge_ratio", "--max-radius-edge"},
+      {"max_volume", "--max-volume"},
+      {"min_dihedral_deg", "--min-dihedral"},
+      {"outer_radius", "--outer-radius"},
+      {"outer_sphere_subdivisions", "--sphere-subdivisions"},
+      {"radii_file", "--radii"},
+      {"rings", "--rings"},
+      {"size_factor", "--size-factor"},
+      {"spacing", "--spacing"},
+      {"sphere_ratio", "--sphere-ratio"},
+      {"t0", "--t0"},
+      {"tetgen_switches", "--tetgen-switches"},
+  };
+  return spell_option_names(message, [](std::string_view name) -> std::string {
+    const auto it = kFlags.find(name);
+    return it == kFlags.end() ? std::string() : it->second;
+  });
+}
+
+}  // namespace molmesh::cli
