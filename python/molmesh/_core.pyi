@@ -155,7 +155,7 @@ def read_atoms(path: PathLike, *, progress: Progress = None, radii: Optional[Pat
                hetatm: bool = ..., waters: bool = ..., hydrogens: bool = ...) -> Atoms: ...
 
 def surface(input: Union[Atoms, Volume], *, progress: Progress = None,
-            surface: str = ..., probe_radius: float = ..., keep_on_surface: bool = ...,
+            surface: str = ..., probe_radius: float = ..., keep_on_surface: bool | None = ...,
             spacing: float = ..., blobbyness: float = ..., isovalue: float = ...,
             truncation: float = ..., blur: str = ..., min_cavity_volume: float = ...,
             coarsen: Sequence[float] = ..., rings: int = ..., alpha: float = ...,
@@ -187,7 +187,7 @@ def hierarchy(input: Union[Atoms, Surface], atoms: Optional[Atoms] = None, *,
               max_radius_edge: float = ..., min_dihedral: float = ...,
               max_volume: Optional[float] = ..., size_factor: float = ...,
               tetgen_switches: str = ..., surface: str = ..., probe_radius: float = ...,
-              keep_on_surface: bool = ..., spacing: float = ..., blobbyness: float = ...,
+              keep_on_surface: bool | None = ..., spacing: float = ..., blobbyness: float = ...,
               isovalue: float = ..., truncation: float = ..., blur: str = ...,
               min_cavity_volume: float = ...) -> Hierarchy: ...
 

@@ -189,7 +189,7 @@ void bind_hierarchy(py::module_& m) {
           if (!s) {
             SurfacePipelineResult result = surface_from_atoms(*atoms, surface_options, r);
             // As `molmesh hierarchy`: every level's processing keeps vertices on the surface.
-            if (surface_options.keep_on_surface) options.processing.project = result.projection;
+            if (keeps_on_surface(surface_options)) options.processing.project = result.projection;
             s = std::make_shared<const SurfaceMesh>(std::move(result.surface));
           }
           o.hierarchy = std::make_shared<Hierarchy>(

@@ -49,8 +49,9 @@ const OptionTable<SurfacePipelineOptions>& volume_table() {
     t.field("probe_radius", MOLMESH_FIELD(probe_radius),
             "solvent probe radius of the ses and sas surfaces, Å (1.4: water)");
     t.field("keep_on_surface", MOLMESH_FIELD(keep_on_surface),
-            "ses, sas, vdw: project vertices back onto the surface after every processing "
-            "move (keeps volume, costs angle quality at creases; docs/surface.md)");
+            "project vertices back onto the surface after every processing move; None: on for "
+            "'gaussian' (onto Eq. 1, exactly), off for ses, sas, vdw (it costs angle quality "
+            "at their creases; docs/processing.md)");
     t.field("spacing", MOLMESH_FIELD(blur.spacing),
             "grid spacing of the blurred volume, Å (smaller: finer surface, more memory)");
     t.field("blobbyness", MOLMESH_FIELD(blur.blobbyness),

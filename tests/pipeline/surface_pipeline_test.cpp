@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -66,6 +67,22 @@ TEST(SurfacePipeline, EmptyIsosurfaceIsAnError) {
   EXPECT_THROW(surface_from_atoms({a}, options), Error);
 }
 
+// Issue 13: a lone atom's Gaussian surface is its sphere (F = 1 at |x - c| = r), and processing
+// keeps every vertex on it.
+TEST(SurfacePipeline, LoneAtomStaysOnItsSphere) {
+  Atom atom;
+  atom.center = Vec3(0.3, -0.2, 0.1);
+  atom.radius = 2.0;
+  const Atoms atoms{atom};
+  SurfacePipelineOptions options;
+  const SurfacePipelineResult result = surface_from_atoms(atoms, options);
+  ASSERT_GT(result.surface.points.size(), 50u);
+  double worst = 0;
+  for (const Vec3& p : result.surface.points)
+    worst = std::max(worst, std::abs((p - atom.center).norm() - atom.radius));
+  EXPECT_LT(worst, 1e-3);
+}
+
 }  // namespace
 }  // namespace molmesh
 
@@ -94,7 +111,17 @@ TEST(SurfacePipeline, LevelSetDistanceOfTheGaussianSurface) {
     EXPECT_LT(d.vertex_max, options.blur.spacing * 2);
   }
   EXPECT_LT(raw.level_set_distance->vertex_mean, 0.04 * options.blur.spacing);
-  EXPECT_GT(processed.level_set_distance->vertex_mean, raw.level_set_distance->vertex_mean);
+  // By default processing keeps the vertices on F = 1 (issue 13's floors: mean 0.005 Å, max
+  // 0.05 Å; centroids 0.03 / 0.15 Å); without the projection they drift off it.
+  EXPECT_LT(processed.level_set_distance->vertex_mean, 0.005);
+  EXPECT_LT(processed.level_set_distance->vertex_max, 0.05);
+  EXPECT_LT(processed.level_set_distance->centroid_mean, 0.03);
+  EXPECT_LT(processed.level_set_distance->centroid_max, 0.15);
+  options.keep_on_surface = false;
+  const SurfacePipelineResult drifted = surface_from_atoms(atoms, options);
+  EXPECT_GT(drifted.level_set_distance->vertex_mean, raw.level_set_distance->vertex_mean);
+  EXPECT_GT(drifted.level_set_distance->vertex_max, 0.05);
+  options.keep_on_surface.reset();
 
   options.raw = true;
   options.blur_method = BlurMethod::kFast;

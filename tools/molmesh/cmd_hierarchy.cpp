@@ -51,7 +51,7 @@ void run(const HierarchyArgs& args, const CliContext& ctx) {
   HierarchyOptions options;
   options.t0 = pipeline.processing.t0;
   options.processing = pipeline.processing;  // its t0 is replaced by one T0 per level
-  if (pipeline.keep_on_surface) options.processing.project = surface.projection;
+  if (keeps_on_surface(pipeline)) options.processing.project = surface.projection;
   if (!pipeline.keep_spheres_file.empty()) {
     for (const Sphere& s : read_spheres(pipeline.keep_spheres_file))
       options.processing.keep_spheres.push_back(s);

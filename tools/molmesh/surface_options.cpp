@@ -41,6 +41,12 @@ void add_surface_pipeline_options(CLI::App& cmd, SurfacePipelineOptions& options
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str()
       ->type_name("R");
+  cmd.add_flag_function(
+      "--keep-on-surface,!--no-keep-on-surface",
+      [&options](std::int64_t count) { options.keep_on_surface = count > 0; },
+      "Project every vertex back onto the surface after each processing move: onto Eq. 1's "
+      "level set, evaluated exactly, for 'gaussian' (default: on); onto the distance field's "
+      "for ses, sas, vdw (default: off, it costs angle quality at creases). docs/processing.md");
   cmd.add_option("--spacing", options.blur.spacing,
                  "Grid spacing of the blurred volume in Å (smaller: finer surface, more "
                  "vertices, more memory)")
@@ -122,6 +128,7 @@ nlohmann::json surface_parameters_json(const SurfaceCliOptions& options) {
   nlohmann::json j;
   j["surface"] = surface_kind_name(options.pipeline.surface);
   j["probe_radius"] = options.pipeline.probe_radius;
+  j["keep_on_surface"] = keeps_on_surface(options.pipeline);
   j["spacing"] = options.pipeline.blur.spacing;
   j["blobbyness"] = options.pipeline.blur.blobbyness;
   j["isovalue"] = options.pipeline.isovalue;

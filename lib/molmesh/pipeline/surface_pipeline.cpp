@@ -27,6 +27,11 @@ using Clock = std::chrono::steady_clock;
 // Molecules centred farther than this from the origin (Å) are blurred in a local frame.
 constexpr double kLocalFrameDistance = 1e3;
 
+// The Newton projection onto Eq. 1's level set (keep_on_surface): steps of at most
+// this many Å, until a step is shorter than the tolerance (Å).
+constexpr double kLevelSetMaxStep = 0.5;
+constexpr double kLevelSetTolerance = 1e-4;
+
 Vec3 frame_centre(const Atoms& atoms, double spacing) {
   Vec3 sum = Vec3::Zero();
   std::size_t n = 0;
@@ -79,7 +84,8 @@ void extract_and_process(const Grid& grid, double level, const SurfacePipelineOp
     return;
   }
   ProcessingOptions processing = options.processing;
-  if (options.keep_on_surface && projection && !processing.project) processing.project = projection;
+  if (keeps_on_surface(options) && projection && !processing.project)
+    processing.project = projection;
   processing.record_stages = processing.record_stages && options.measure;
   if (!options.keep_spheres_file.empty()) {
     for (Sphere s : read_spheres(options.keep_spheres_file)) {
@@ -110,6 +116,10 @@ GaussianField exact_field(const Atoms& atoms, const SurfacePipelineOptions& opti
 }
 
 }  // namespace
+
+bool keeps_on_surface(const SurfacePipelineOptions& options) {
+  return options.keep_on_surface.value_or(options.surface == SurfaceKind::kGaussian);
+}
 
 double level_of(const SurfacePipelineOptions& options) {
   return options.surface == SurfaceKind::kGaussian ? options.isovalue : 0.0;
@@ -149,10 +159,18 @@ SurfacePipelineResult surface_from_atoms(const Atoms& atoms, const SurfacePipeli
   result.stages.push_back({options.surface == SurfaceKind::kGaussian ? "blur" : "distance field",
                            seconds_since(start), std::nullopt});
   result.grid_dims = grid->dims;
-  // Distance-field surfaces are exact level sets: processing keeps its vertices on them.
+  // Distance-field surfaces are exact level sets of the grid; the Gaussian's is Eq. 1's.
   std::function<Vec3(const Vec3&)> local_projection;
-  if (options.surface != SurfaceKind::kGaussian)
+  if (options.surface != SurfaceKind::kGaussian) {
     local_projection = level_set_projection(grid, level_of(options));
+  } else if (keeps_on_surface(options)) {
+    auto field = std::make_shared<const GaussianField>(exact_field(local_atoms, options));
+    const double level = options.isovalue;
+    local_projection = [field, level](const Vec3& p) {
+      return newton_to_level([&field](const Vec3& x, Vec3* g) { return field->value(x, g); }, level,
+                             p, kLevelSetMaxStep, kLevelSetTolerance);
+    };
+  }
   extract_and_process(*grid, level_of(options), local_options, local_projection, reporter, result,
                       centre);
   if (options.measure && options.surface == SurfaceKind::kGaussian) {

@@ -29,11 +29,14 @@ struct SurfacePipelineOptions {
   // blur.spacing and contoured at 0; blobbyness and isovalue do not apply). docs/surface.md.
   SurfaceKind surface = SurfaceKind::kGaussian;
   double probe_radius = 1.4;  // Å, solvent probe of the sas and ses surfaces (water)
-  // Distance-field surfaces only: project vertices back onto the level set after every
-  // processing move (ProcessingOptions::project). Off by default: on 1a1p and fas2 it keeps
-  // 0.1-0.2 % more volume but costs angle quality at the surfaces' creases and cusps
-  // (docs/surface.md).
-  bool keep_on_surface = false;
+  // Project vertices back onto the surface after every processing move
+  // (ProcessingOptions::project): onto the distance field's trilinear level set for vdw/sas/ses,
+  // onto F = isovalue of Eq. 1 evaluated exactly (volume/gaussian_field.hpp) for the Gaussian
+  // of atoms. Unset: on for the Gaussian (it puts vertices on Eq. 1 to ~1e-4 Å and improves
+  // the angles), off for the distance fields (pulled back onto creases and cusps they lose
+  // angle quality); docs/surface.md, docs/processing.md "Distance to the level set".
+  // keeps_on_surface() below resolves it.
+  std::optional<bool> keep_on_surface;
   BlurOptions blur;  // blur.isovalue is overwritten with `isovalue` below
   // Eq. 1 summed exactly, or Eq. 2 by splatting + recursive filtering (volume/fast_blur.hpp,
   // measurements in docs/inputs.md).
@@ -70,9 +73,9 @@ struct SurfacePipelineResult {
   std::array<int, 3> grid_dims{0, 0, 0};  // the blurred volume's size (0 for volume input)
   Grid volume;         // the blurred volume, only with options.keep_volume (atoms input)
   double level = 1.0;  // the level marching cubes contoured (isovalue, or 0 for distances)
-  // For the distance-field surfaces: moves a point onto the surface (processing uses it
-  // when options.keep_on_surface; `hierarchy` passes it on to every level's processing).
-  // Empty for the Gaussian.
+  // Moves a point onto the surface (processing uses it when options.keep_on_surface;
+  // `hierarchy` passes it on to every level's processing). Set for the distance-field
+  // surfaces always, for the Gaussian of atoms with options.keep_on_surface.
   std::function<Vec3(const Vec3&)> projection;
 };
 
@@ -80,6 +83,9 @@ struct SurfacePipelineResult {
 // kGaussian, a distance field (volume/ball_union.hpp, volume/ses_field.hpp) otherwise.
 Grid surface_volume(const Atoms& atoms, const SurfacePipelineOptions& options,
                     const Reporter& reporter = {});
+// options.keep_on_surface, or the kind's default when it is unset.
+bool keeps_on_surface(const SurfacePipelineOptions& options);
+
 double level_of(const SurfacePipelineOptions& options);
 
 SurfacePipelineResult surface_from_atoms(const Atoms& atoms, const SurfacePipelineOptions& options,

@@ -1,8 +1,5 @@
 #include "molmesh/processing/process_surface.hpp"
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -13,6 +10,7 @@
 #include "molmesh/processing/coarsen.hpp"
 #include "molmesh/processing/edge_flips.hpp"
 #include "molmesh/processing/halfedge_mesh.hpp"
+#include "molmesh/processing/project_vertices.hpp"
 #include "molmesh/processing/untangle.hpp"
 
 namespace molmesh {
@@ -44,15 +42,6 @@ class StageTimer {
   ProcessingResult& result_;
   bool record_;
 };
-
-void project_vertices(SurfaceMesh& mesh, const std::function<Vec3(const Vec3&)>& project) {
-  if (!project) return;
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, mesh.points.size(), 1024),
-                    [&](const auto& r) {
-                      for (std::size_t v = r.begin(); v != r.end(); ++v)
-                        mesh.points[v] = project(mesh.points[v]);
-                    });
-}
 
 ProcessingResult process_centred(const SurfaceMesh& input, const ProcessingOptions& options,
                                  const Reporter& reporter);

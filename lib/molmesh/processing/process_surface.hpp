@@ -23,7 +23,7 @@ struct ProcessingOptions {
   double beta = 1.0;                 // Eq. 6 exponent on λ2/λ1
   int rings = 2;                     // k-ring of the structure tensor (improvement and coarsening)
   std::vector<Sphere> keep_spheres;  // no vertex inside is deleted by coarsening
-  ImproveOptions improve;            // improve.rings is overwritten by `rings`
+  ImproveOptions improve;  // improve.rings is overwritten by `rings`
   // Sweeps of the first improvement, on the dense raw mesh: it only has to straighten the
   // marching-cubes slivers before coarsening; more sweeps cost time and change nothing
   // measurable after coarsening (docs/processing.md).
@@ -41,9 +41,12 @@ struct ProcessingOptions {
   bool cleanup_worklist = false;
   bool record_stages = true;  // compute SurfaceStats after every stage
   // Optional: moves a point onto the surface the mesh stands for (the distance-field
-  // surfaces set volume/level_set_projection.hpp's). When set, every vertex is projected
-  // after each stage that moves vertices (improvement, smoothing), so the processed mesh
-  // stays on that surface instead of shrinking with smoothing. Must be thread-safe.
+  // surfaces set volume/level_set_projection.hpp's, the Gaussian one with
+  // SurfacePipelineOptions::keep_on_surface a Newton projection onto Eq. 1). When set, every
+  // vertex is projected after each stage that moves vertices (improvement, smoothing), so the
+  // processed mesh stays on that surface instead of shrinking with smoothing; a vertex whose
+  // projection would turn one of its triangles over stays put (processing/project_vertices.hpp).
+  // Must be thread-safe.
   std::function<Vec3(const Vec3&)> project;
 };
 

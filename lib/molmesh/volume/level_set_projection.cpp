@@ -34,20 +34,27 @@ double trilinear_value(const Grid& grid, const Vec3& p, Vec3* gradient) {
   return v0 + z * (v1 - v0);
 }
 
-Vec3 project_to_level(const Grid& grid, double level, const Vec3& p) {
-  const double max_step = grid.spacing.minCoeff();
+Vec3 newton_to_level(const ScalarField& field, double level, const Vec3& p, double max_step,
+                     double tolerance, int max_iterations) {
   Vec3 x = p;
-  for (int iteration = 0; iteration < 8; ++iteration) {
+  for (int iteration = 0; iteration < max_iterations; ++iteration) {
     Vec3 g;
-    const double f = trilinear_value(grid, x, &g) - level;
+    const double f = field(x, &g) - level;
     const double g2 = g.squaredNorm();
-    if (std::abs(f) < 1e-9 * max_step || g2 < 1e-20) break;
+    if (f == 0.0 || !(g2 > 1e-20)) break;
     Vec3 step = -(f / g2) * g;
     const double length = step.norm();
     if (length > max_step) step *= max_step / length;
     x += step;
+    if (length < tolerance) break;
   }
   return x;
+}
+
+Vec3 project_to_level(const Grid& grid, double level, const Vec3& p) {
+  const double cell = grid.spacing.minCoeff();
+  return newton_to_level([&grid](const Vec3& x, Vec3* g) { return trilinear_value(grid, x, g); },
+                         level, p, cell, 1e-9 * cell);
 }
 
 std::function<Vec3(const Vec3&)> level_set_projection(std::shared_ptr<const Grid> grid,

@@ -14,11 +14,16 @@ namespace molmesh {
 // e.g. trilinear_value on a grid or GaussianField::value. Must be thread-safe.
 using ScalarField = std::function<double(const Vec3&, Vec3*)>;
 
+// The point near p where `field` equals `level`: Newton steps x <- x - (F - level) ∇F / |∇F|²,
+// each at most `max_step` long, until a step is shorter than `tolerance` or after
+// `max_iterations` steps; p itself when the gradient vanishes.
+Vec3 newton_to_level(const ScalarField& field, double level, const Vec3& p, double max_step,
+                     double tolerance, int max_iterations = 8);
+
 // Trilinear value and gradient at p (clamped to the grid).
 double trilinear_value(const Grid& grid, const Vec3& p, Vec3* gradient = nullptr);
 
-// The point near p where the trilinear interpolant equals `level`, reached by at most 8
-// Newton steps of at most one cell each; p itself when the gradient vanishes.
+// newton_to_level on the trilinear interpolant: steps of at most one cell, to 1e-9 cell.
 Vec3 project_to_level(const Grid& grid, double level, const Vec3& p);
 
 // project_to_level bound to a grid it keeps alive.
