@@ -36,6 +36,7 @@ std::map<std::string, std::string> hierarchy_parameters(
     const SurfacePipelineOptions& s = source->surface;
     p["surface"] = surface_kind_name(s.surface);
     p["probe_radius"] = text(s.probe_radius);
+    p["keep_on_surface"] = keeps_on_surface(s) ? "yes" : "no";
     p["spacing"] = text(s.blur.spacing);
     p["blobbyness"] = text(s.blur.blobbyness);
     p["isovalue"] = text(s.isovalue);
