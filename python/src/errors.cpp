@@ -1,7 +1,6 @@
 #include "errors.hpp"
 
 #include <exception>
-#include <map>
 #include <string>
 
 #include "molmesh/core/error.hpp"
@@ -33,17 +32,14 @@ void raise(PyObject* type, const char* message) { PyErr_SetString(type, message)
 // The library names options by their struct members (core/error.hpp); a Python message
 // names the keyword argument where the two differ.
 std::string with_keywords(const char* message) {
-  static const std::map<std::string, std::string, std::less<>> kKeywords{
+  static const OptionSpellings kKeywords{
       {"max_levels", "`levels`"},
       {"max_radius_edge_ratio", "`max_radius_edge`"},
       {"min_dihedral_deg", "`min_dihedral`"},
       {"outer_sphere_subdivisions", "`sphere_subdivisions`"},
       {"radii_file", "`radii`"},
   };
-  return spell_option_names(message, [](std::string_view name) -> std::string {
-    const auto it = kKeywords.find(name);
-    return it == kKeywords.end() ? std::string() : it->second;
-  });
+  return spell_option_names(message, kKeywords);
 }
 
 }  // namespace

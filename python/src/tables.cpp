@@ -2,6 +2,9 @@
 
 #include <pybind11/numpy.h>
 
+#include <cstdio>
+#include <string>
+
 #include "arrays.hpp"
 #include "molmesh/io/sphere_list.hpp"
 
@@ -32,6 +35,17 @@ py::object spheres_array(const std::vector<Sphere>& spheres) {
   }
   return out;
 }
+
+namespace {
+
+// A range bound as the library's messages print it (1000, 1e+06).
+std::string number(double v) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%g", v);
+  return buffer;
+}
+
+}  // namespace
 
 bool is_path(const py::handle& v) {
   return py::isinstance<py::str>(v) || py::hasattr(v, "__fspath__");
@@ -149,11 +163,14 @@ const OptionTable<TetMeshOptions>& tetmesh_table() {
     t.choice("domain", MOLMESH_FIELD(domain), domains,
              "the molecule (region 1), the solvent up to the outer sphere (region 2), or both");
     t.field("sphere_ratio", MOLMESH_FIELD(sphere_ratio),
-            "outer sphere radius as a multiple of the molecule size");
-    t.field("outer_radius", MOLMESH_FIELD(outer_radius),
-            "outer sphere radius, Å (None: from sphere_ratio)");
+            "outer sphere radius as a multiple of the molecule size, (0, " +
+                number(kMaxSphereRatio) + "]");
+    t.field(
+        "outer_radius", MOLMESH_FIELD(outer_radius),
+        "outer sphere radius, Å, (0, " + number(kMaxOuterRadius) + "] (None: from sphere_ratio)");
     t.field("sphere_subdivisions", MOLMESH_FIELD(outer_sphere_subdivisions),
-            "outer sphere: icosahedron subdivided L times (10*4^L+2 vertices)");
+            "outer sphere: icosahedron subdivided L times (10*4^L+2 vertices), 0.." +
+                std::to_string(kMaxOuterSphereSubdivisions));
     t.custom(
         "active_site",
         [](TetMeshOptions& o, py::handle v) {
@@ -165,13 +182,15 @@ const OptionTable<TetMeshOptions>& tetmesh_table() {
         [](const TetMeshOptions& o) { return spheres_array(o.active_site); },
         "sphere file or (n, 4) array: molecular-surface faces inside get marker 3");
     t.field("max_radius_edge", MOLMESH_FIELD(max_radius_edge_ratio),
-            "TetGen -q radius-edge ratio bound");
+            "TetGen -q radius-edge ratio bound, [" + number(kMinRadiusEdgeRatio) + ", " +
+                number(kMaxRadiusEdgeRatio) + "]");
     t.field("min_dihedral", MOLMESH_FIELD(min_dihedral_deg),
-            "TetGen -q minimum dihedral angle, degrees");
+            "TetGen -q minimum dihedral angle, degrees, [0, " + number(kMaxMinDihedralDeg) + "]");
     t.field("max_volume", MOLMESH_FIELD(max_volume),
             "TetGen -a largest tetrahedron volume, Å^3 (None: unbounded)");
     t.field("size_factor", MOLMESH_FIELD(size_factor),
-            "size grading (TetGen -m): target size = mean edge length x factor (0: off)");
+            "size grading (TetGen -m): target size = mean edge length x factor, [0, " +
+                number(kMaxSizeFactor) + "] (0: off)");
     t.field("tetgen_switches", MOLMESH_FIELD(tetgen_switches),
             "expert: TetGen switches replacing the ones above");
     return t;

@@ -91,3 +91,26 @@ def test_option_errors_name_the_keyword(full):
     assert "--" not in str(info.value) and "max_radius_edge_ratio" not in str(info.value)
     with pytest.raises(molmesh.Error, match="`size_factor`"):
         molmesh.tetmesh(full.report["surface"], size_factor=-1.0)
+
+
+def test_defaults_and_ranges_are_the_clis(tmp_path, cli_full):
+    """Both front ends take the defaults and ranges of TetMeshOptions (tetrahedralize.hpp):
+    the CLI's --stats parameters are Python's defaults, and a value just beyond a bound is
+    refused by both (the CLI while parsing, exit 2)."""
+    _, cli_stats, out = cli_full
+    defaults, cli = molmesh.defaults("tetmesh"), cli_stats["parameters"]
+    assert defaults["domain"] == cli["domain"] == "full"
+    for keyword, key in [("sphere_ratio", "sphere_ratio"), ("size_factor", "size_factor"),
+                         ("sphere_subdivisions", "outer_sphere_subdivisions"),
+                         ("max_radius_edge", "max_radius_edge_ratio"),
+                         ("min_dihedral", "min_dihedral_deg")]:
+        assert defaults[keyword] == cli[key], keyword
+    surface = molmesh.read_surface(out / "s.ply")
+    for keyword, flag, beyond in [("sphere_ratio", "--sphere-ratio", 1.0001e4),
+                                  ("sphere_subdivisions", "--sphere-subdivisions", 8),
+                                  ("max_radius_edge", "--max-radius-edge", 0.999),
+                                  ("min_dihedral", "--min-dihedral", 70.001),
+                                  ("size_factor", "--size-factor", 1000.001)]:
+        with pytest.raises(molmesh.Error, match=f"`{keyword}`"):
+            molmesh.tetmesh(surface, **{keyword: beyond})
+        run_cli("tetmesh", out / "s.ply", "-o", tmp_path / "x.m", flag, beyond, expect=2)

@@ -1,15 +1,12 @@
 #include "option_spelling.hpp"
 
-#include <map>
-
 #include "molmesh/core/error.hpp"
 
 namespace molmesh::cli {
 
 std::string with_cli_flags(std::string_view message) {
-  // Library option (its struct member) -> flag. Members whose flag is not simply the name
-  // with '_' -> '-' are the reason for the table; unknown names stay backquoted.
-  static const std::map<std::string, std::string, std::less<>> kFlags{
+  // Library option (its struct member) -> flag; names without a flag stay backquoted.
+  static const OptionSpellings kFlags{
       {"level", "--level"},
       {"max_levels", "--levels"},
       {"max_memory_bytes", "--max-memory"},
@@ -26,10 +23,7 @@ std::string with_cli_flags(std::string_view message) {
       {"t0", "--t0"},
       {"tetgen_switches", "--tetgen-switches"},
   };
-  return spell_option_names(message, [](std::string_view name) -> std::string {
-    const auto it = kFlags.find(name);
-    return it == kFlags.end() ? std::string() : it->second;
-  });
+  return spell_option_names(message, kFlags);
 }
 
 }  // namespace molmesh::cli

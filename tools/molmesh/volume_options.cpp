@@ -22,7 +22,7 @@ void add_volume_options(CLI::App& cmd, VolumeCliOptions& options,
   cmd.add_option("--sphere-ratio", options.tet.sphere_ratio,
                  "Outer sphere radius as a multiple of the molecule size (largest distance of "
                  "an atom centre from their mean; of a surface point for surface input)")
-      ->check(finite_above(0, 1e4))
+      ->check(finite_above(0, kMaxSphereRatio))
       ->capture_default_str();
   cmd.add_option("--outer-radius", options.outer_radius,
                  "Outer sphere radius in Å (overrides --sphere-ratio; needed for one atom; the "
@@ -34,7 +34,7 @@ void add_volume_options(CLI::App& cmd, VolumeCliOptions& options,
                  options.tet.outer_sphere_subdivisions,
                  "Outer sphere triangulation: icosahedron subdivided L times (10*4^L+2 "
                  "vertices); coarse keeps the far field coarse")
-      ->check(CLI::Range(0, 7))
+      ->check(CLI::Range(0, kMaxOuterSphereSubdivisions))
       ->capture_default_str();
   cmd.add_option("--active-site", options.active_site,
                  "Spheres (x y z r per line, Å) marking the active site: molecular-surface "
@@ -44,11 +44,11 @@ void add_volume_options(CLI::App& cmd, VolumeCliOptions& options,
       ->type_name("FILE");
   cmd.add_option("--max-radius-edge", options.tet.max_radius_edge_ratio,
                  "TetGen -q radius-edge ratio bound (smaller: better tets, more points)")
-      ->check(finite_in(1, 1000))
+      ->check(finite_in(kMinRadiusEdgeRatio, kMaxRadiusEdgeRatio))
       ->capture_default_str();
   cmd.add_option("--min-dihedral", options.tet.min_dihedral_deg,
                  "TetGen -q minimum dihedral angle in degrees (sought by its optimiser)")
-      ->check(finite_in(0.0, 70.0))
+      ->check(finite_in(0.0, kMaxMinDihedralDeg))
       ->capture_default_str();
   cmd.add_option("--max-volume", options.max_volume,
                  "TetGen -a: largest tetrahedron volume in Å^3 (default: unbounded)")
@@ -58,7 +58,7 @@ void add_volume_options(CLI::App& cmd, VolumeCliOptions& options,
                  "Size grading (TetGen -m): tetrahedra near an input vertex aim at its mean "
                  "edge length times this factor, interpolated between the molecular surface "
                  "and the outer sphere; smaller: finer near the surface; 0: no grading")
-      ->check(finite_in(0, 1000))
+      ->check(finite_in(0, kMaxSizeFactor))
       ->capture_default_str();
 }
 

@@ -67,4 +67,11 @@ std::string spell_option_names(std::string_view message,
   return out;
 }
 
+std::string spell_option_names(std::string_view message, const OptionSpellings& spellings) {
+  return spell_option_names(message, [&](std::string_view name) -> std::string {
+    const auto it = spellings.find(name);
+    return it == spellings.end() ? std::string() : it->second;
+  });
+}
+
 }  // namespace molmesh

@@ -8,6 +8,7 @@
 // spell_option_names().
 #include <cstddef>
 #include <functional>
+#include <map>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -45,5 +46,8 @@ class OutputError : public Error {
 // spell(name); names spell() returns empty for are left as they are.
 std::string spell_option_names(std::string_view message,
                                const std::function<std::string(std::string_view)>& spell);
+// The same with a table: library name -> the front end's spelling.
+using OptionSpellings = std::map<std::string, std::string, std::less<>>;
+std::string spell_option_names(std::string_view message, const OptionSpellings& spellings);
 
 }  // namespace molmesh

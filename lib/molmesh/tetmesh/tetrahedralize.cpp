@@ -253,26 +253,32 @@ void TetMeshOptions::validate() const {
   auto require = [](bool ok, const std::string& what) {
     if (!ok) throw Error(what);
   };
-  require(std::isfinite(sphere_ratio) && sphere_ratio > 0.0 && sphere_ratio <= 1e4,
-          "the sphere ratio (`sphere_ratio`) must be a finite number in (0, 10000]");
+  require(std::isfinite(sphere_ratio) && sphere_ratio > 0.0 && sphere_ratio <= kMaxSphereRatio,
+          "the sphere ratio (`sphere_ratio`) must be a finite number in (0, " +
+              format_number(kMaxSphereRatio) + "]");
   if (outer_radius)
     require(std::isfinite(*outer_radius) && *outer_radius > 0.0 && *outer_radius <= kMaxOuterRadius,
             "the outer sphere radius (`outer_radius`) must be a finite number in (0, " +
                 format_number(kMaxOuterRadius) + "] Å");
-  require(outer_sphere_subdivisions >= 0 && outer_sphere_subdivisions <= 7,
-          "the outer sphere subdivision level (`outer_sphere_subdivisions`) must be 0..7");
-  require(std::isfinite(max_radius_edge_ratio) && max_radius_edge_ratio >= 1.0 &&
-              max_radius_edge_ratio <= 1e3,
-          "the radius-edge bound (`max_radius_edge_ratio`) must be a finite number in [1, 1000] "
-          "(TetGen may not terminate below 1)");
   require(
-      std::isfinite(min_dihedral_deg) && min_dihedral_deg >= 0.0 && min_dihedral_deg <= 70.0,
-      "the minimum dihedral angle (`min_dihedral_deg`) must be a finite number in [0, 70] degrees");
+      outer_sphere_subdivisions >= 0 && outer_sphere_subdivisions <= kMaxOuterSphereSubdivisions,
+      "the outer sphere subdivision level (`outer_sphere_subdivisions`) must be 0.." +
+          std::to_string(kMaxOuterSphereSubdivisions));
+  require(std::isfinite(max_radius_edge_ratio) && max_radius_edge_ratio >= kMinRadiusEdgeRatio &&
+              max_radius_edge_ratio <= kMaxRadiusEdgeRatio,
+          "the radius-edge bound (`max_radius_edge_ratio`) must be a finite number in [" +
+              format_number(kMinRadiusEdgeRatio) + ", " + format_number(kMaxRadiusEdgeRatio) +
+              "] (TetGen may not terminate below 1)");
+  require(std::isfinite(min_dihedral_deg) && min_dihedral_deg >= 0.0 &&
+              min_dihedral_deg <= kMaxMinDihedralDeg,
+          "the minimum dihedral angle (`min_dihedral_deg`) must be a finite number in [0, " +
+              format_number(kMaxMinDihedralDeg) + "] degrees");
   if (max_volume)
     require(std::isfinite(*max_volume) && *max_volume > 0.0,
             "the maximum tetrahedron volume (`max_volume`) must be a finite positive number");
-  require(std::isfinite(size_factor) && size_factor >= 0.0 && size_factor <= 1e3,
-          "the size factor (`size_factor`) must be a finite number in [0, 1000] (0: no grading)");
+  require(std::isfinite(size_factor) && size_factor >= 0.0 && size_factor <= kMaxSizeFactor,
+          "the size factor (`size_factor`) must be a finite number in [0, " +
+              format_number(kMaxSizeFactor) + "] (0: no grading)");
   require(std::isfinite(max_memory_bytes) && max_memory_bytes > 0.0,
           "the memory limit (`max_memory_bytes`) must be positive");
   for (const auto& s : active_site)

@@ -31,6 +31,15 @@ std::string domain_name(Domain domain);
 // (--outer-radius 1e300 aborted in a TetGen assertion).
 inline constexpr double kMaxOuterRadius = 1e6;
 
+// The other ranges TetMeshOptions::validate() accepts (docs/tetmesh.md, "Limits"), for the
+// front ends that check values while parsing (the CLI's volume options) with the same bounds.
+inline constexpr double kMaxSphereRatio = 1e4;         // sphere_ratio in (0, this]
+inline constexpr int kMaxOuterSphereSubdivisions = 7;  // outer_sphere_subdivisions 0..this
+inline constexpr double kMinRadiusEdgeRatio = 1.0;     // TetGen may not terminate below 1
+inline constexpr double kMaxRadiusEdgeRatio = 1e3;     // max_radius_edge_ratio upper bound
+inline constexpr double kMaxMinDihedralDeg = 70.0;     // min_dihedral_deg in [0, this]
+inline constexpr double kMaxSizeFactor = 1e3;          // size_factor in [0, this]
+
 struct TetMeshOptions {
   Domain domain = Domain::full;
   // Outer sphere radius = sphere_ratio × molecule size (max distance of atom centres from
