@@ -1,9 +1,11 @@
 #!/usr/bin/env bash
 # One entry point for a fresh Debian 12 machine:
 #   tools/build.sh demo   install packages, build (Release), mesh the bundled molecule
-#   tools/build.sh test   install packages, build (Release), run every test (slow ones too);
-#                         with MOLMESH_SANITIZE=1 also the fast suite and bounded fuzz runs
-#                         under ASan/UBSan (build-asan, docs/testing.md)
+#   tools/build.sh test   install packages, build (Release), run every test (slow ones too),
+#                         then the reader tests and fuzz-corpus replays under ASan/UBSan
+#                         (build-asan-readers); MOLMESH_SANITIZE=1: the whole fast suite and
+#                         bounded fuzz runs under ASan/UBSan instead (build-asan),
+#                         MOLMESH_SANITIZE=0: neither (docs/testing.md)
 #   tools/build.sh build  install packages and build only
 # Re-running is cheap: apt skips what is installed and the build is incremental.
 set -euo pipefail
@@ -31,13 +33,25 @@ build() {
   cmake --build "$build_dir" -j "$jobs"
 }
 
-# The sanitizer leg (docs/testing.md): a second build with AddressSanitizer,
+# The sanitizer legs (docs/testing.md): a second build with AddressSanitizer,
 # UndefinedBehaviorSanitizer and libstdc++ assertions, with clang so the reader fuzz targets
-# link libFuzzer. Runs the fast suite and the fuzz-corpus replays, then a bounded fuzz run
-# per reader; any sanitizer report fails. Opt-in for now (MOLMESH_SANITIZE=1): it has not yet
-# been run to completion on the 2-core machine CI uses, so CI does not run it (docs/testing.md).
-sanitize() {
-  local dir="${MOLMESH_ASAN_BUILD_DIR:-$here/build-asan}"
+# link libFuzzer; any sanitizer report fails (halt on the first one). Leaks inside Debian
+# libraries are suppressed in tools/sanitizers/lsan.supp, nothing else.
+#   readers (what `test` runs by default, so CI): only the library, the reader tests
+#     (molmesh_tests_io_readers) and the fuzz targets, in build-asan-readers; runs the reader
+#     tests and the fuzz-corpus replays.
+#   full (MOLMESH_SANITIZE=1): everything but benchmarks and Python, in build-asan; runs the
+#     fast suite, the fuzz-corpus replays and a bounded fuzz run per reader. Too slow for CI's
+#     30 min on 2 cores (docs/testing.md has the measurements).
+# MOLMESH_SANITIZE=0 skips both.
+sanitizer_env() {
+  export ASAN_OPTIONS="abort_on_error=1:detect_leaks=1:strict_string_checks=1"
+  export LSAN_OPTIONS="suppressions=$here/tools/sanitizers/lsan.supp:print_suppressions=0"
+  export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
+}
+
+sanitizer_configure() {
+  local dir="$1"
   local flags="-O1 -g -fno-omit-frame-pointer -fsanitize=address,undefined"
   flags+=" -fno-sanitize-recover=undefined -D_GLIBCXX_ASSERTIONS"
   cmake -S "$here" -B "$dir" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
@@ -46,12 +60,26 @@ sanitize() {
     -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" \
     -DCMAKE_SHARED_LINKER_FLAGS="-fsanitize=address,undefined" \
     -DMOLMESH_BUILD_BENCHMARKS=OFF -DMOLMESH_BUILD_PYTHON=OFF -DMOLMESH_FUZZ=ON
+}
+
+sanitize_readers() {
+  local dir="${MOLMESH_ASAN_READERS_BUILD_DIR:-$here/build-asan-readers}"
+  sanitizer_configure "$dir"
+  cmake --build "$dir" -j "$jobs" --target reader_tests
+  local start=$SECONDS
+  (cd "$dir" && sanitizer_env &&
+    ctest -L '^(io_readers|fuzz)$' --output-on-failure -j "$jobs" --timeout 600)
+  echo "molmesh: reader sanitizer leg tests took $((SECONDS - start)) s"
+}
+
+sanitize_full() {
+  local dir="${MOLMESH_ASAN_BUILD_DIR:-$here/build-asan}"
+  sanitizer_configure "$dir"
   cmake --build "$dir" -j "$jobs"
   local start=$SECONDS
   (
     cd "$dir"
-    export ASAN_OPTIONS="abort_on_error=1:detect_leaks=1:strict_string_checks=1"
-    export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
+    sanitizer_env
     ctest -LE slow --output-on-failure -j "$jobs" --timeout 1500
     ctest -R '^fuzz_run_' --output-on-failure -j "$jobs"
   )
@@ -69,7 +97,12 @@ case "$mode" in
     ;;
   test)
     (cd "$build_dir" && ctest --output-on-failure -j "$jobs" --timeout 1500)
-    if [ "${MOLMESH_SANITIZE:-0}" = 1 ]; then sanitize; fi
+    case "${MOLMESH_SANITIZE:-0}" in
+      1) sanitize_full ;;
+      0) ;;
+      readers) sanitize_readers ;;
+      *) echo "MOLMESH_SANITIZE: 0, 1 or readers" >&2; exit 2 ;;
+    esac
     ;;
   *) echo "usage: tools/build.sh [demo|test|build]" >&2; exit 2 ;;
 esac

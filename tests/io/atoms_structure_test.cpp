@@ -132,6 +132,28 @@ TEST(Structure, AlternativeLocationsKeepTheFirstAndSameNamedAtomsStay) {
       << warning;
 }
 
+// gemmi reads a line only to column 120, but a byte >= 0x80 beyond that made it start a
+// record there (a second atom from the tail of the first line); and it read a short LINK
+// record's distance (columns 74-78) past the end of the line (ASan: the sanitizer leg).
+// Both from fuzzing (tests/fuzz/crashes/pdb).
+TEST(Structure, TextBeyondColumn120IsNotARecordAndShortLinkRecordsAreSafe) {
+  const std::string atom1 =
+      "ATOM      1  N   ALA A   1       1.000   0.000   0.000  1.00  0.00           N  ";
+  const std::string atom2 =
+      "ATOM      2  CA  ALA A   1       2.000   0.000   0.000  1.00  0.00           C  ";
+  const std::string tail =
+      "ATOM      3  C   ALA A   1       9.000   0.000   0.000  1.00  0.00           C  ";
+  const std::string link =
+      "LINK         N   ALA A   1                 CA  ALA A   1     1555   1555  1";
+  ASSERT_EQ(link.size(), 75u);  // > 73 and < 78: the distance field is cut
+  const auto path = write_text("long_line.pdb", atom1 + std::string(40, ' ') + "\xff" + tail +
+                                                    "\n" + link + "\n" + atom2 + "\nEND\n");
+  const Atoms atoms = read_atoms(path);
+  ASSERT_EQ(atoms.size(), 2u);
+  EXPECT_DOUBLE_EQ(atoms[0].center.x(), 1.0);
+  EXPECT_DOUBLE_EQ(atoms[1].center.x(), 2.0);
+}
+
 TEST(Structure, FiltersHydrogens) {
   AtomReadOptions heavy;
   heavy.include_hydrogens = false;

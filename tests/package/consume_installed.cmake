@@ -1,7 +1,9 @@
 # CTest driver (tests/CMakeLists.txt, test "package_consumer"): installs the build tree into
 # a fresh prefix, checks the header layout, and builds and runs two consumers that find the
 # package with find_package(molmesh) (tests/package/consumer). Variables: BUILD_DIR,
-# SOURCE_DIR, WORK, OFF, CXX (the compiler of the build), optionally CXX_LAUNCHER.
+# SOURCE_DIR, WORK, OFF, CXX (the compiler of the build), optionally CXX_LAUNCHER and
+# LINKER_FLAGS (the build's CMAKE_EXE_LINKER_FLAGS: a sanitizer build's libraries need its
+# runtime, tools/build.sh).
 file(REMOVE_RECURSE ${WORK})
 set(prefix ${WORK}/prefix)
 execute_process(COMMAND ${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${prefix}
@@ -44,6 +46,7 @@ if(CXX_LAUNCHER)
 endif()
 execute_process(COMMAND ${CMAKE_COMMAND} -S ${SOURCE_DIR} -B ${WORK}/build
   -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH=${prefix} -DCMAKE_CXX_COMPILER=${CXX} ${launcher}
+  "-DCMAKE_EXE_LINKER_FLAGS=${LINKER_FLAGS}"
   RESULT_VARIABLE status OUTPUT_VARIABLE log ERROR_VARIABLE log)
 if(status)
   message(FATAL_ERROR "configuring the consumer failed:\n${log}")

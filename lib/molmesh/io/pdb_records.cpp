@@ -19,14 +19,16 @@ bool is_digits(std::string_view s) {
 }
 
 // What gemmi takes for a coordinate record: "ATOM" or "HETATM" at the start of the line.
+// The line starts with `word` (upper case), ignoring case, as gemmi matches record names.
+bool starts_with_record(std::string_view line, std::string_view word) {
+  if (line.size() < word.size()) return false;
+  for (std::size_t i = 0; i < word.size(); ++i)
+    if (std::toupper(static_cast<unsigned char>(line[i])) != word[i]) return false;
+  return true;
+}
+
 bool is_coordinate_record(std::string_view line) {
-  auto starts = [&](std::string_view word) {
-    if (line.size() < word.size()) return false;
-    for (std::size_t i = 0; i < word.size(); ++i)
-      if (std::toupper(static_cast<unsigned char>(line[i])) != word[i]) return false;
-    return true;
-  };
-  return starts("HETATM") || starts("ATOM");
+  return starts_with_record(line, "HETATM") || starts_with_record(line, "ATOM");
 }
 
 // Whether columns 31-38, 39-46, 47-54 hold three finite numbers.
@@ -122,10 +124,36 @@ PdbScan scan_pdb_records(const std::string& contents, const std::string& name) {
   PdbScan scan;
   std::string rewritten;
   std::size_t copied = 0;  // contents[0, copied) are in `rewritten`
+  bool changed = false;
   LineCursor cursor(contents);
   std::string_view line;
+  // Puts `text` in place of the current line in the text gemmi reads.
+  auto replace = [&](std::string_view text) {
+    const auto offset = static_cast<std::size_t>(line.data() - contents.data());
+    rewritten.append(contents, copied, offset - copied).append(text);
+    copied = offset + line.size();
+    changed = true;
+  };
+  // Two guards for gemmi 0.5 (Debian 12), both found by fuzzing (tests/fuzz/crashes/pdb):
+  // it reads columns 74-78 of an SSBOND/LINK record past the end of a shorter line, so those
+  // are padded to 80 columns; and it ignores a line beyond column 120 but, at a byte >= 0x80
+  // there, starts a new record after it, so lines are cut at 120 columns (what it reads).
+  constexpr std::size_t gemmi_columns = 120;
+  auto guard_for_gemmi = [&] {
+    if (line.size() > gemmi_columns) {
+      replace(line.substr(0, gemmi_columns));
+    } else if (line.size() < 80 &&
+               (starts_with_record(line, "SSBOND") || starts_with_record(line, "LINK"))) {
+      std::string padded(line);
+      padded.resize(80, ' ');
+      replace(padded);
+    }
+  };
   while (cursor.next(line)) {
-    if (!is_coordinate_record(line)) continue;
+    if (!is_coordinate_record(line)) {
+      guard_for_gemmi();
+      continue;
+    }
     const std::size_t n = cursor.line_number();
     if (!fixed_columns_parse(line)) {
       const auto fixed = rewrite_from_fields(line);
@@ -145,18 +173,17 @@ PdbScan scan_pdb_records(const std::string& contents, const std::string& name) {
         }
         throw InputError(name, n, "tab in an ATOM/HETATM record whose fields cannot be read");
       }
-      const auto offset = static_cast<std::size_t>(line.data() - contents.data());
-      rewritten.append(contents, copied, offset - copied).append(*fixed);
-      copied = offset + line.size();
+      replace(*fixed);
       if (scan.whitespace_records++ == 0) scan.first_whitespace_line = n;
       const auto serial = parse_integer(trim(std::string_view(*fixed).substr(6, 5)));
       if (serial) scan.lines.emplace(static_cast<int>(*serial), n);
       continue;
     }
+    guard_for_gemmi();
     const auto serial = parse_integer(trim(line.substr(6, 5)));
     if (serial) scan.lines.emplace(static_cast<int>(*serial), n);
   }
-  if (scan.whitespace_records > 0) {
+  if (changed) {
     rewritten.append(contents, copied, std::string::npos);
     scan.rewritten = std::move(rewritten);
   }
