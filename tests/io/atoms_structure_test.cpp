@@ -146,8 +146,9 @@ TEST(Structure, TextBeyondColumn120IsNotARecordAndShortLinkRecordsAreSafe) {
   const std::string link =
       "LINK         N   ALA A   1                 CA  ALA A   1     1555   1555  1";
   ASSERT_EQ(link.size(), 75u);  // > 73 and < 78: the distance field is cut
-  const auto path = write_text("long_line.pdb", atom1 + std::string(40, ' ') + "\xff" + tail +
-                                                    "\n" + link + "\n" + atom2 + "\nEND\n");
+  const auto path =
+      write_text("long_line.pdb", atom1 + std::string(40, ' ') + "\xff" + tail + "\n" + link +
+                                      "\n" + "SSBO" + link.substr(4) + "\n" + atom2 + "\nEND\n");
   const Atoms atoms = read_atoms(path);
   ASSERT_EQ(atoms.size(), 2u);
   EXPECT_DOUBLE_EQ(atoms[0].center.x(), 1.0);

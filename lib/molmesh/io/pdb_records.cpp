@@ -143,7 +143,8 @@ PdbScan scan_pdb_records(const std::string& contents, const std::string& name) {
     if (line.size() > gemmi_columns) {
       replace(line.substr(0, gemmi_columns));
     } else if (line.size() < 80 &&
-               (starts_with_record(line, "SSBOND") || starts_with_record(line, "LINK"))) {
+               (starts_with_record(line, "SSBO") || starts_with_record(line, "LINK"))) {
+      // gemmi tells records apart by their first four letters only.
       std::string padded(line);
       padded.resize(80, ' ');
       replace(padded);
