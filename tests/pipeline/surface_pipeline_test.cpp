@@ -9,6 +9,7 @@
 #include "molmesh/core/error.hpp"
 #include "molmesh/io/read_atoms.hpp"
 #include "molmesh/surface/point_in_mesh.hpp"
+#include "molmesh/volume/level_set_projection.hpp"
 
 namespace molmesh {
 namespace {
@@ -57,6 +58,29 @@ TEST(SurfacePipeline, VolumeInputSkipsBlur) {
   ASSERT_EQ(r.stages.size(), 1u);
   EXPECT_EQ(r.stages[0].name, "marching cubes");
   EXPECT_EQ(r.stages[0].stats->euler_characteristic, 2);
+}
+
+// A volume input keeps its vertices on the volume's trilinear level set only when asked.
+TEST(SurfacePipeline, VolumeInputProjectsOntoItsLevelSetWhenAsked) {
+  const Atoms atoms = read_atoms(std::string(MOLMESH_TEST_DATA_DIR) + "/1a1p.pqr");
+  const Grid grid = blur_atoms(atoms, {});
+  const auto worst_distance = [&grid](const SurfaceMesh& mesh) {
+    double worst = 0;
+    for (const Vec3& p : mesh.points) {
+      Vec3 g;
+      const double f = trilinear_value(grid, p, &g) - 1.0;
+      worst = std::max(worst, std::abs(f) / g.norm());
+    }
+    return worst;
+  };
+  SurfacePipelineOptions options;
+  const SurfacePipelineResult plain = surface_from_grid(grid, options);
+  EXPECT_FALSE(plain.projection);
+  EXPECT_GT(worst_distance(plain.surface), 0.05);
+  options.keep_on_surface = true;
+  const SurfacePipelineResult kept = surface_from_grid(grid, options);
+  ASSERT_TRUE(kept.projection);
+  EXPECT_LT(worst_distance(kept.surface), 1e-3);
 }
 
 TEST(SurfacePipeline, EmptyIsosurfaceIsAnError) {

@@ -198,7 +198,16 @@ SurfacePipelineResult surface_from_atoms(const Atoms& atoms, const SurfacePipeli
 SurfacePipelineResult surface_from_grid(const Grid& grid, const SurfacePipelineOptions& options,
                                         const Reporter& reporter) {
   SurfacePipelineResult result;
-  extract_and_process(grid, options.isovalue, options, {}, reporter, result);
+  // A volume's surface is its trilinear level set; projecting onto it is asked for explicitly
+  // (maps are noisy at the voxel scale, and an unset keep_on_surface means the Gaussian's
+  // default, which is for atoms).
+  std::function<Vec3(const Vec3&)> projection;
+  if (options.keep_on_surface.value_or(false))
+    projection = level_set_projection(std::make_shared<const Grid>(grid), options.isovalue);
+  SurfacePipelineOptions local = options;
+  local.keep_on_surface = projection != nullptr;
+  extract_and_process(grid, options.isovalue, local, projection, reporter, result);
+  result.projection = std::move(projection);
   return result;
 }
 

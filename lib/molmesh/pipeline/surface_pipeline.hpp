@@ -34,7 +34,8 @@ struct SurfacePipelineOptions {
   // onto F = isovalue of Eq. 1 evaluated exactly (volume/gaussian_field.hpp) for the Gaussian
   // of atoms. Unset: on for the Gaussian (it puts vertices on Eq. 1 to ~1e-4 Å and improves
   // the angles), off for the distance fields (pulled back onto creases and cusps they lose
-  // angle quality); docs/surface.md, docs/processing.md "Distance to the level set".
+  // angle quality); docs/surface.md, docs/processing.md "Distance to the level set". Volume
+  // inputs (surface_from_grid) project onto their trilinear level set only when it is true.
   // keeps_on_surface() below resolves it.
   std::optional<bool> keep_on_surface;
   BlurOptions blur;  // blur.isovalue is overwritten with `isovalue` below
