@@ -1,11 +1,11 @@
 #!/usr/bin/env bash
 # One entry point for a fresh Debian 12 machine:
 #   tools/build.sh demo   install packages, build (Release), mesh the bundled molecule
-#   tools/build.sh test   install packages, build (Release), run every test (slow ones too),
-#                         then the reader tests and fuzz-corpus replays under ASan/UBSan
-#                         (build-asan-readers); MOLMESH_SANITIZE=1: the whole fast suite and
-#                         bounded fuzz runs under ASan/UBSan instead (build-asan),
-#                         MOLMESH_SANITIZE=0: neither (docs/testing.md)
+#   tools/build.sh test   install packages, build (Release), run every test (slow ones too);
+#                         MOLMESH_SANITIZE=readers adds the reader tests and fuzz-corpus
+#                         replays under ASan/UBSan (build-asan-readers), MOLMESH_SANITIZE=1
+#                         the whole fast suite and bounded fuzz runs (build-asan); the
+#                         default 0 adds neither (docs/testing.md)
 #   tools/build.sh build  install packages and build only
 # Re-running is cheap: apt skips what is installed and the build is incremental.
 set -euo pipefail
