@@ -114,8 +114,8 @@ namespace molmesh {
 namespace {
 
 // The distance to Eq. 1's level set is measured for the Gaussian surface of atoms, with both
-// blur methods, and only when asked for; processing moves vertices off the grid's
-// interpolant, so the processed vertices lie farther from the level set than the raw ones.
+// blur methods, and only when asked for; processing keeps the vertices on it by default, and
+// without the projection they drift farther from it than the raw ones.
 TEST(SurfacePipeline, LevelSetDistanceOfTheGaussianSurface) {
   const Atoms atoms = read_atoms(std::string(MOLMESH_TEST_DATA_DIR) + "/1a1p.pqr");
   SurfacePipelineOptions options;

@@ -159,12 +159,15 @@ SurfacePipelineResult surface_from_atoms(const Atoms& atoms, const SurfacePipeli
   result.stages.push_back({options.surface == SurfaceKind::kGaussian ? "blur" : "distance field",
                            seconds_since(start), std::nullopt});
   result.grid_dims = grid->dims;
-  // Distance-field surfaces are exact level sets of the grid; the Gaussian's is Eq. 1's.
+  // Distance-field surfaces are exact level sets of the grid; the Gaussian's is Eq. 1's, built
+  // once for the projection and the measurement.
+  std::shared_ptr<const GaussianField> field;
+  if (options.surface == SurfaceKind::kGaussian && (keeps_on_surface(options) || options.measure))
+    field = std::make_shared<const GaussianField>(exact_field(local_atoms, options));
   std::function<Vec3(const Vec3&)> local_projection;
   if (options.surface != SurfaceKind::kGaussian) {
     local_projection = level_set_projection(grid, level_of(options));
   } else if (keeps_on_surface(options)) {
-    auto field = std::make_shared<const GaussianField>(exact_field(local_atoms, options));
     const double level = options.isovalue;
     local_projection = [field, level](const Vec3& p) {
       return newton_to_level([&field](const Vec3& x, Vec3* g) { return field->value(x, g); }, level,
@@ -173,11 +176,10 @@ SurfacePipelineResult surface_from_atoms(const Atoms& atoms, const SurfacePipeli
   }
   extract_and_process(*grid, level_of(options), local_options, local_projection, reporter, result,
                       centre);
-  if (options.measure && options.surface == SurfaceKind::kGaussian) {
+  if (options.measure && field) {
     const auto measure_start = Clock::now();
-    const GaussianField field = exact_field(local_atoms, options);
     result.level_set_distance = measure_level_set_distance(
-        result.surface, [&field](const Vec3& p, Vec3* g) { return field.value(p, g); },
+        result.surface, [&field](const Vec3& p, Vec3* g) { return field->value(p, g); },
         options.isovalue);
     result.stages.push_back({"level-set distance", seconds_since(measure_start), std::nullopt});
   }
@@ -204,9 +206,7 @@ SurfacePipelineResult surface_from_grid(const Grid& grid, const SurfacePipelineO
   std::function<Vec3(const Vec3&)> projection;
   if (options.keep_on_surface.value_or(false))
     projection = level_set_projection(std::make_shared<const Grid>(grid), options.isovalue);
-  SurfacePipelineOptions local = options;
-  local.keep_on_surface = projection != nullptr;
-  extract_and_process(grid, options.isovalue, local, projection, reporter, result);
+  extract_and_process(grid, options.isovalue, options, projection, reporter, result);
   result.projection = std::move(projection);
   return result;
 }
