@@ -196,24 +196,19 @@ void bind_hierarchy(py::module_& m) {
               build_hierarchy(*s, atoms ? *atoms : kNoAtoms, options, r, &o.report));
           return o;
         });
-        py::dict parameters = hierarchy_table().values(options);
-        if (atoms_input) parameters.attr("update")(volume_table().values(surface_options));
         // Recorded in the file as `molmesh hierarchy` records them (one writer for both).
         const PyAtoms* read = atoms_input ? &input.cast<PyAtoms&>() : nullptr;
-        std::optional<HierarchySurfaceSource> source;
-        if (read) {
-          source = HierarchySurfaceSource{std::nullopt, surface_options};
-          if (read->source) source->atoms = read->source->options;
-        }
+        std::optional<SurfaceSource> source;
+        if (read) source = surface_source(*read, surface_options);
         out.hierarchy->parameters =
             hierarchy_parameters(options, out.report, active_site_file, source);
         if (read && read->source) {
           out.hierarchy->input_name = read->source->name;
           out.hierarchy->input_checksum = read->source->checksum;
         }
-        // The keys of `molmesh hierarchy --stats`; parameters as the keyword values.
+        // The keys of `molmesh hierarchy --stats`, whose parameters are the file's.
         py::dict report = json_to_python(to_json(out.report).dump());
-        report["parameters"] = parameters;
+        report["parameters"] = py::cast(out.hierarchy->parameters);
         return make_hierarchy(std::move(out.hierarchy), report);
       },
       py::arg("input"), py::arg("atoms") = py::none(), doc.c_str());

@@ -7,6 +7,7 @@
 
 #include "bindings.hpp"
 #include "molmesh/io/stats_json.hpp"
+#include "molmesh/pipeline/parameters_json.hpp"
 #include "progress.hpp"
 #include "surface_objects.hpp"
 #include "tables.hpp"
@@ -49,8 +50,8 @@ void bind_improve(py::module_& m) {
         report["repair"] = to_json(result->repair);
         report["repair_seconds"] = result->repair_seconds;
         report["stages"] = to_json(result->stages);
+        report["parameters"] = improve_parameters_json(options);  // the CLI's --stats writer
         py::dict py_report = json_to_python(report.dump());
-        py_report["parameters"] = improve_table().values(options);
         py::object repaired =
             make_surface(std::shared_ptr<const SurfaceMesh>(result, &result->repaired));
         return make_surface(std::shared_ptr<const SurfaceMesh>(result, &result->surface), repaired,

@@ -15,6 +15,7 @@
 #include "molmesh/io/surface_mesh_io.hpp"
 #include "molmesh/io/volume_io.hpp"
 #include "molmesh/io/vtu.hpp"
+#include "molmesh/pipeline/parameters_json.hpp"
 #include "molmesh/pipeline/report_json.hpp"
 #include "molmesh/surface/surface_stats.hpp"
 #include "progress.hpp"
@@ -230,8 +231,11 @@ void bind_surface(py::module_& m) {
         });
         nlohmann::json report = surface_result_json(*result);
         report["grid_dims"] = atoms ? result->grid_dims : grid->dims;
+        // The CLI's --stats parameters (one writer); the read options of atoms from a file.
+        report["parameters"] =
+            surface_parameters_json(atoms_input ? surface_source(input.cast<PyAtoms&>(), options)
+                                                : SurfaceSource{std::nullopt, options});
         py::dict py_report = json_to_python(report.dump());
-        py_report["parameters"] = surface_table().values(options);
         py_report["volume"] = py::none();
         if (options.keep_volume && atoms) {
           py_report["volume"] = PyVolume{std::shared_ptr<const Grid>(result, &result->volume)};

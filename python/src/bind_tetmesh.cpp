@@ -11,6 +11,7 @@
 #include "bindings.hpp"
 #include "molmesh/io/stats_json.hpp"
 #include "molmesh/io/volume_mesh_io.hpp"
+#include "molmesh/pipeline/parameters_json.hpp"
 #include "molmesh/tetmesh/tet_stats.hpp"
 #include "progress.hpp"
 #include "surface_objects.hpp"
@@ -153,13 +154,13 @@ void bind_tetmesh(py::module_& m) {
               tetrahedralize(*o.surface, atoms ? *atoms : kNoAtoms, options, r, &o.report));
           return o;
         });
-        nlohmann::json tetgen = to_json(out.report);
-        py::dict report;
-        report["tetgen"] = json_to_python(tetgen.dump());
+        // The CLI's --stats tetgen object and parameters (one writer each).
+        std::optional<SurfaceSource> source;
+        if (atoms_input) source = surface_source(input.cast<PyAtoms&>(), surface_options);
+        const nlohmann::json json = {{"tetgen", to_json(out.report)},
+                                     {"parameters", tetmesh_parameters_json(options, source)}};
+        py::dict report = json_to_python(json.dump());
         report["surface"] = atoms_input ? make_surface(out.surface) : input;
-        py::dict parameters = tetmesh_table().values(options);
-        if (atoms_input) parameters.attr("update")(surface_table().values(surface_options));
-        report["parameters"] = parameters;
         return make_tetmesh(out.mesh, report);
       },
       py::arg("input"), py::arg("atoms") = py::none(), doc.c_str());

@@ -13,6 +13,7 @@
 #include "molmesh/atoms/atom.hpp"
 #include "molmesh/hierarchy/hierarchy.hpp"
 #include "molmesh/io/read_atoms.hpp"
+#include "molmesh/pipeline/surface_source.hpp"
 #include "molmesh/surface/surface_mesh.hpp"
 #include "molmesh/tetmesh/tet_mesh.hpp"
 #include "molmesh/volume/grid.hpp"
@@ -33,6 +34,14 @@ struct PyAtoms {
   std::shared_ptr<const Atoms> atoms;
   std::optional<AtomsSource> source;  // nullopt: from arrays
 };
+
+// What the parameter writers record of a surface made from `atoms` with `options`: the
+// options, and how the atoms were read when they came from a file (as the CLI records).
+inline SurfaceSource surface_source(const PyAtoms& atoms, const SurfacePipelineOptions& options) {
+  SurfaceSource source{std::nullopt, options};
+  if (atoms.source) source.atoms = atoms.source->options;
+  return source;
+}
 
 struct PySurface {
   std::shared_ptr<const SurfaceMesh> mesh;

@@ -71,6 +71,7 @@ def test_report_is_the_clis_stats(built, cli_file):
         assert mine["volume_transfer"] == theirs["volume_transfer"]
     assert built.report["outer_radius"] == cli["outer_radius"] > 0
     assert cli["parameters"] == molmesh.read_hierarchy(cli_file).parameters
+    assert built.report["parameters"] == cli["parameters"] == built.parameters
 
 
 def test_non_default_parameters_are_the_clis(tmp_path):

@@ -23,16 +23,19 @@ def test_improve_is_the_clis_bit_for_bit(tmp_path, raw_ply):
     assert mine.raw.stats() == stats["input"]["input_surface"]
     assert mine.report["repair"] == stats["input"]["repair"]
     assert mine.report["parameters"]["feature_weight"] == stats["parameters"]["feature_weight"]
+    assert mine.report["parameters"] == stats["parameters"]  # pipeline/parameters_json.hpp
 
 
 def test_improve_options_and_arrays(tmp_path, raw_ply):
     run_cli("improve", raw_ply, "-o", tmp_path / "cli.ply", "--t0", "0.3", "--sweeps", "4",
-            "--no-flips")
+            "--no-flips", "--stats", tmp_path / "cli.json")
     raw = molmesh.read_surface(raw_ply)
     mine = molmesh.improve(raw.vertices, raw.faces, t0=[0.3], sweeps=4, flips=False)
     cli = molmesh.read_surface(tmp_path / "cli.ply")
     assert np.array_equal(mine.vertices, cli.vertices)
     assert np.array_equal(mine.faces, cli.faces)
+    assert mine.report["parameters"] == read_json(tmp_path / "cli.json")["parameters"]
+    assert mine.report["parameters"]["flips"] is False
 
 
 def test_open_mesh_is_refused_with_a_molmesh_error(raw_ply):

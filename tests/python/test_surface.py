@@ -58,14 +58,24 @@ def test_defaults_are_the_clis(fas2_cli_surface):
     assert defaults["truncation"] == cli["kernel_truncation"]
 
 
+def test_parameters_are_the_clis(fas2_surface, fas2_cli_surface):
+    """report["parameters"] is the --stats parameters object, key for key and value for value
+    (one writer: pipeline/parameters_json.hpp): keep_on_surface resolved, the atom selection."""
+    _, cli_stats = fas2_cli_surface
+    assert fas2_surface.report["parameters"] == cli_stats["parameters"]
+    assert fas2_surface.report["parameters"]["keep_on_surface"] is True
+    assert fas2_surface.report["parameters"]["hetatm"] is True
+
+
 def test_options_map_to_cli_flags(tmp_path, fas2_atoms):
     run_cli("surface", DATA / "fas2.pqr", "-o", tmp_path / "s.ply", "--spacing", "0.8",
             "--blobbyness", "-0.7", "--coarsen", "0.2,0.3", "--rings", "3", "--beta", "1.5",
-            "--blur", "fast")
+            "--blur", "fast", "--no-keep-on-surface", "--stats", tmp_path / "s.json")
     surf = molmesh.surface(fas2_atoms, spacing=0.8, blobbyness=-0.7, coarsen=[0.2, 0.3],
-                           rings=3, beta=1.5, blur="fast")
+                           rings=3, beta=1.5, blur="fast", keep_on_surface=False)
     assert_same_mesh(surf, molmesh.read_surface(tmp_path / "s.ply"))
     assert surf.report["parameters"]["coarsen"] == [0.2, 0.3]
+    assert surf.report["parameters"] == read_json(tmp_path / "s.json")["parameters"]
 
 
 def test_ses_surface_is_the_clis_bit_for_bit(tmp_path):

@@ -40,6 +40,8 @@ def test_tetmesh_is_the_clis(full, cli_full):
     np.testing.assert_allclose(full.vertices, cli_mesh.vertices, rtol=1e-9, atol=1e-9)
     surface = molmesh.read_surface(out / "s.ply")
     assert np.array_equal(full.report["surface"].vertices, surface.vertices)
+    # report["parameters"] is the --stats parameters object (pipeline/parameters_json.hpp).
+    assert full.report["parameters"] == cli_stats["parameters"]
 
 
 def test_arrays_and_markers(full):
@@ -54,6 +56,20 @@ def test_surface_input_with_atoms_is_the_same_mesh(atoms, full):
     again = molmesh.tetmesh(full.report["surface"], atoms)
     assert np.array_equal(again.tetrahedra, full.tetrahedra)
     assert np.array_equal(again.vertices, full.vertices)
+    # A given surface records the tetmesh options only, as the CLI does for a mesh file.
+    assert "spacing" not in again.report["parameters"]
+    assert again.report["parameters"] == {
+        k: v for k, v in full.report["parameters"].items() if k in again.report["parameters"]}
+
+
+def test_surface_file_parameters_are_the_clis(tmp_path, cli_full):
+    _, _, out = cli_full
+    run_cli("tetmesh", out / "s.ply", "-o", tmp_path / "s.m", "--domain", "interior",
+            "--max-volume", "30", "--stats", tmp_path / "s.json")
+    mesh = molmesh.tetmesh(molmesh.read_surface(out / "s.ply"), domain="interior",
+                           max_volume=30.0)
+    assert mesh.report["parameters"] == read_json(tmp_path / "s.json")["parameters"]
+    assert mesh.report["parameters"]["max_volume"] == 30.0
 
 
 def test_exterior_options(tmp_path, atoms):
@@ -63,6 +79,8 @@ def test_exterior_options(tmp_path, atoms):
     cli = read_json(tmp_path / "e.json")
     assert mesh.stats() == {k: cli[k] for k in mesh.stats()}
     assert mesh.report["parameters"]["spacing"] == 0.8
+    assert mesh.report["parameters"] == cli["parameters"]
+    assert mesh.report["parameters"]["domain"] == "exterior"
     assert set(np.unique(mesh.cell_markers)) == {2}
 
 

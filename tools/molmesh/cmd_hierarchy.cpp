@@ -69,7 +69,7 @@ void run(const HierarchyArgs& args, const CliContext& ctx) {
   hierarchy.input_name = std::filesystem::path(args.input).filename().string();
   hierarchy.input_checksum = sha256_file(args.input);
   hierarchy.parameters = hierarchy_parameters(options, report, args.volume.active_site,
-                                              HierarchySurfaceSource{args.surface.atoms, pipeline});
+                                              SurfaceSource{args.surface.atoms, pipeline});
   write_hierarchy(args.output, hierarchy);
   if (!args.stats.empty()) {
     nlohmann::json document = to_json(report);

@@ -15,6 +15,7 @@
 #include "molmesh/io/stats_json.hpp"
 #include "molmesh/io/surface_mesh_io.hpp"
 #include "molmesh/pipeline/improve_pipeline.hpp"
+#include "molmesh/pipeline/parameters_json.hpp"
 #include "molmesh/processing/dislocation.hpp"
 #include "molmesh/processing/mesh_repair.hpp"
 #include "molmesh/processing/process_surface.hpp"
@@ -92,17 +93,7 @@ void run(const ImproveArgs& args, const CliContext& ctx) {
     in["input_surface"] = to_json(compute_surface_stats(repaired));
     in["repair"] = to_json(report);
     in["output"] = args.output;
-    nlohmann::json parameters;
-    parameters["t0"] = options.processing.t0;
-    parameters["rings"] = options.processing.rings;
-    parameters["sweeps"] = options.processing.improve.sweeps;
-    parameters["feature_weight"] = options.processing.improve.feature_weight;
-    parameters["smooth_normal_iterations"] = options.processing.smoothing.normal_iterations;
-    parameters["flips"] = options.processing.flips;
-    parameters["cleanup_rounds"] = options.processing.cleanup_rounds;
-    parameters["merge_tolerance"] = options.repair.merge_tolerance;
-    parameters["repair_only"] = options.repair_only;
-    nlohmann::json doc = stats_document(stats, timings, in, parameters);
+    nlohmann::json doc = stats_document(stats, timings, in, improve_parameters_json(options));
     doc["dislocation"] = {{"max", d.max}, {"mean", d.mean}};
     write_json_file(args.stats, doc);
   }

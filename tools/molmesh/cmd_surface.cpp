@@ -10,6 +10,7 @@
 #include "molmesh/io/stats_json.hpp"
 #include "molmesh/io/surface_mesh_io.hpp"
 #include "molmesh/io/volume_io.hpp"
+#include "molmesh/pipeline/parameters_json.hpp"
 #include "molmesh/pipeline/report_json.hpp"
 #include "molmesh/pipeline/surface_pipeline.hpp"
 #include "option_checks.hpp"
@@ -78,8 +79,9 @@ void run(const SurfaceArgs& args, const CliContext& ctx) {
     input["grid_dims"] = volume_input ? volume.dims : result.grid_dims;
     input["raw_surface"] = to_json(compute_surface_stats(result.raw));
     input["output"] = args.output;
+    const SurfaceSource source{args.options.atoms, args.options.pipeline};
     nlohmann::json document =
-        stats_document(stats, timings, input, surface_parameters_json(args.options));
+        stats_document(stats, timings, input, surface_parameters_json(source));
     document.update(surface_result_json(result));
     write_json_file(args.stats, document);
   }

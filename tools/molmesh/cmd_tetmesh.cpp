@@ -3,6 +3,7 @@
 #include <chrono>
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <string>
 
 #include "command_registry.hpp"
@@ -13,6 +14,7 @@
 #include "molmesh/io/stats_json.hpp"
 #include "molmesh/io/surface_mesh_io.hpp"
 #include "molmesh/io/volume_mesh_io.hpp"
+#include "molmesh/pipeline/parameters_json.hpp"
 #include "molmesh/pipeline/surface_pipeline.hpp"
 #include "molmesh/tetmesh/tet_stats.hpp"
 #include "molmesh/tetmesh/tetrahedralize.hpp"
@@ -86,18 +88,9 @@ void run(const TetmeshArgs& args, const CliContext& ctx) {
     for (const auto& [name, seconds] : timings) doc["timings_s"][name] = seconds;
     input["output"] = args.output;
     doc["input"] = input;
-    nlohmann::json parameters =
-        atoms.empty() ? nlohmann::json::object() : surface_parameters_json(args.surface);
-    parameters["domain"] = args.volume.domain;
-    parameters["sphere_ratio"] = options.sphere_ratio;
-    parameters["outer_sphere_subdivisions"] = options.outer_sphere_subdivisions;
-    parameters["max_radius_edge_ratio"] = options.max_radius_edge_ratio;
-    parameters["min_dihedral_deg"] = options.min_dihedral_deg;
-    if (options.outer_radius) parameters["outer_radius"] = *options.outer_radius;
-    if (options.max_volume) parameters["max_volume"] = *options.max_volume;
-    parameters["size_factor"] = options.size_factor;
-    parameters["active_site_spheres"] = options.active_site.size();
-    doc["parameters"] = parameters;
+    std::optional<SurfaceSource> source;  // surface-file input: the tetmesh options only
+    if (!atoms.empty()) source = SurfaceSource{args.surface.atoms, args.surface.pipeline};
+    doc["parameters"] = tetmesh_parameters_json(options, source);
     write_json_file(args.stats, doc);
   }
 }

@@ -124,27 +124,4 @@ void add_surface_options(CLI::App& cmd, SurfaceCliOptions& options) {
   add_surface_pipeline_options(cmd, options.pipeline);
 }
 
-nlohmann::json surface_parameters_json(const SurfaceCliOptions& options) {
-  nlohmann::json j;
-  j["surface"] = surface_kind_name(options.pipeline.surface);
-  j["probe_radius"] = options.pipeline.probe_radius;
-  j["keep_on_surface"] = keeps_on_surface(options.pipeline);
-  j["spacing"] = options.pipeline.blur.spacing;
-  j["blobbyness"] = options.pipeline.blur.blobbyness;
-  j["isovalue"] = options.pipeline.isovalue;
-  j["kernel_truncation"] = options.pipeline.blur.truncation;
-  j["min_cavity_volume"] = options.pipeline.min_cavity_volume;
-  j["blur"] = options.pipeline.blur_method == BlurMethod::kFast ? "fast" : "exact";
-  j["raw"] = options.pipeline.raw;
-  j["coarsen"] = options.pipeline.processing.t0;
-  j["rings"] = options.pipeline.processing.rings;
-  j["alpha"] = options.pipeline.processing.alpha;
-  j["beta"] = options.pipeline.processing.beta;
-  j["keep_spheres"] = options.pipeline.keep_spheres_file;
-  j["radii"] = options.atoms.radii_file ? options.atoms.radii_file->string() : std::string();
-  j["hetatm"] = options.atoms.include_hetatm;
-  j["waters"] = options.atoms.include_waters;
-  return j;
-}
-
 }  // namespace molmesh::cli

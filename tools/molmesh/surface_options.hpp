@@ -3,7 +3,6 @@
 // cavities, raw), shared by the surface, tetmesh and hierarchy commands so they are spelled
 // and documented once. Processing options are bound here too.
 #include <CLI/CLI.hpp>
-#include <nlohmann/json.hpp>
 
 #include "molmesh/io/read_atoms.hpp"
 #include "molmesh/pipeline/surface_pipeline.hpp"
@@ -17,12 +16,10 @@ struct SurfaceCliOptions {
 
 // --radii, --hetatm/--no-hetatm, --waters
 void add_atom_options(CLI::App& cmd, AtomReadOptions& options);
-// --surface, --probe-radius, --spacing, --blobbyness, --isovalue, --min-cavity-volume, --raw (and processing options)
+// --surface, --probe-radius, --spacing, --blobbyness, --isovalue, --min-cavity-volume, --raw (and
+// processing options)
 void add_surface_pipeline_options(CLI::App& cmd, SurfacePipelineOptions& options);
 // Both of the above.
 void add_surface_options(CLI::App& cmd, SurfaceCliOptions& options);
-
-// The options as they were used, for the "parameters" object of --stats files.
-nlohmann::json surface_parameters_json(const SurfaceCliOptions& options);
 
 }  // namespace molmesh::cli

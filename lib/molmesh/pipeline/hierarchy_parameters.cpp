@@ -24,7 +24,7 @@ std::string join(const std::vector<double>& values) {
 
 std::map<std::string, std::string> hierarchy_parameters(
     const HierarchyOptions& options, const HierarchyReport& report,
-    const std::string& active_site_file, const std::optional<HierarchySurfaceSource>& source) {
+    const std::string& active_site_file, const std::optional<SurfaceSource>& source) {
   std::map<std::string, std::string> p;
   const TetMeshOptions& tet = options.tetmesh;
   p["t0"] = join(options.t0);

@@ -7,25 +7,18 @@
 #include <string>
 
 #include "molmesh/hierarchy/build_hierarchy.hpp"
-#include "molmesh/io/read_atoms.hpp"
-#include "molmesh/pipeline/surface_pipeline.hpp"
+#include "molmesh/pipeline/surface_source.hpp"
 
 namespace molmesh {
 
-// Where the hierarchy's surface came from, when it was made from atoms: how they were read
-// (nullopt: not from a file, e.g. arrays) and the options of the raw surface.
-struct HierarchySurfaceSource {
-  std::optional<AtomReadOptions> atoms;
-  SurfacePipelineOptions surface;
-};
-
 // `options` and `report` as given to and returned by build_hierarchy(); `active_site_file`:
 // the sphere list options.tetmesh.active_site was read from (empty: none, or given as
-// spheres); `source`: nullopt for a hierarchy built from a given surface (then only the
-// hierarchy's own parameters are recorded). Numbers are the shortest text that reads back
-// to the same double (0.2, not 0.20000000000000001).
-std::map<std::string, std::string> hierarchy_parameters(
-    const HierarchyOptions& options, const HierarchyReport& report,
-    const std::string& active_site_file, const std::optional<HierarchySurfaceSource>& source);
+// spheres); `source`: the atoms and the options of the raw surface, nullopt for a hierarchy built
+// from a given surface (then only the hierarchy's own parameters are recorded). Numbers are the
+// shortest text that reads back to the same double (0.2, not 0.20000000000000001).
+std::map<std::string, std::string> hierarchy_parameters(const HierarchyOptions& options,
+                                                        const HierarchyReport& report,
+                                                        const std::string& active_site_file,
+                                                        const std::optional<SurfaceSource>& source);
 
 }  // namespace molmesh
