@@ -4,6 +4,7 @@
 #include <string>
 
 #include "molmesh/core/error.hpp"
+#include "molmesh/tetmesh/tetmesh_option_specs.hpp"
 
 namespace molmesh::python {
 namespace {
@@ -29,20 +30,23 @@ PyObject* new_type(py::module_& m, const char* name, py::tuple bases, const char
 
 void raise(PyObject* type, const char* message) { PyErr_SetString(type, message); }
 
+}  // namespace
+
 // The library names options by their struct members (core/error.hpp); a Python message
 // names the keyword argument where the two differ.
-std::string with_keywords(const char* message) {
-  static const OptionSpellings kKeywords{
-      {"max_levels", "`levels`"},
-      {"max_radius_edge_ratio", "`max_radius_edge`"},
-      {"min_dihedral_deg", "`min_dihedral`"},
-      {"outer_sphere_subdivisions", "`sphere_subdivisions`"},
-      {"radii_file", "`radii`"},
-  };
+std::string with_keywords(std::string_view message) {
+  static const OptionSpellings kKeywords = [] {
+    OptionSpellings keywords{
+        {"max_levels", "`levels`"},
+        {"radii_file", "`radii`"},
+    };
+    for (const OptionSpec* spec : kTetMeshOptionSpecs.all())
+      if (spec->member != spec->name)
+        keywords.emplace(std::string(spec->member), "`" + std::string(spec->name) + "`");
+    return keywords;
+  }();
   return spell_option_names(message, kKeywords);
 }
-
-}  // namespace
 
 PyObject* warning_type() { return g_warning; }
 

@@ -2,11 +2,12 @@
 
 #include <pybind11/numpy.h>
 
-#include <cstdio>
 #include <string>
 
 #include "arrays.hpp"
+#include "errors.hpp"
 #include "molmesh/io/sphere_list.hpp"
+#include "molmesh/tetmesh/tetmesh_option_specs.hpp"
 
 namespace molmesh::python {
 
@@ -38,11 +39,12 @@ py::object spheres_array(const std::vector<Sphere>& spheres) {
 
 namespace {
 
-// A range bound as the library's messages print it (1000, 1e+06).
-std::string number(double v) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%g", v);
-  return buffer;
+// The docstring line of a library-described option (core/option_spec.hpp): its help text
+// with keywords for members, `suffix` (what Python takes beyond the CLI), then its range.
+std::string doc_of(const OptionSpec& spec, const std::string& suffix = "") {
+  std::string doc = with_keywords(spec.help) + suffix;
+  if (spec.range) doc += ", " + range_text(*spec.range);
+  return doc;
 }
 
 }  // namespace
@@ -157,22 +159,19 @@ const OptionTable<ImprovePipelineOptions>& improve_table() {
 
 const OptionTable<TetMeshOptions>& tetmesh_table() {
   static const auto table = [] {
+    const TetMeshOptionSpecs& specs = kTetMeshOptionSpecs;
     OptionTable<TetMeshOptions> t;
     std::vector<std::pair<std::string, Domain>> domains;
     for (Domain d : kDomains) domains.emplace_back(domain_name(d), d);
-    t.choice("domain", MOLMESH_FIELD(domain), domains,
-             "the molecule (region 1), the solvent up to the outer sphere (region 2), or both");
-    t.field("sphere_ratio", MOLMESH_FIELD(sphere_ratio),
-            "outer sphere radius as a multiple of the molecule size, (0, " +
-                number(kMaxSphereRatio) + "]");
-    t.field(
-        "outer_radius", MOLMESH_FIELD(outer_radius),
-        "outer sphere radius, Å, (0, " + number(kMaxOuterRadius) + "] (None: from sphere_ratio)");
-    t.field("sphere_subdivisions", MOLMESH_FIELD(outer_sphere_subdivisions),
-            "outer sphere: icosahedron subdivided L times (10*4^L+2 vertices), 0.." +
-                std::to_string(kMaxOuterSphereSubdivisions));
+    t.choice(std::string(specs.domain.name), MOLMESH_FIELD(domain), domains, doc_of(specs.domain));
+    t.field(std::string(specs.sphere_ratio.name), MOLMESH_FIELD(sphere_ratio),
+            doc_of(specs.sphere_ratio));
+    t.field(std::string(specs.outer_radius.name), MOLMESH_FIELD(outer_radius),
+            doc_of(specs.outer_radius));
+    t.field(std::string(specs.sphere_subdivisions.name), MOLMESH_FIELD(outer_sphere_subdivisions),
+            doc_of(specs.sphere_subdivisions));
     t.custom(
-        "active_site",
+        std::string(specs.active_site.name),
         [](TetMeshOptions& o, py::handle v) {
           o.active_site.clear();
           if (v.is_none()) return;
@@ -180,19 +179,17 @@ const OptionTable<TetMeshOptions>& tetmesh_table() {
                                      : to_spheres(v, "active_site");
         },
         [](const TetMeshOptions& o) { return spheres_array(o.active_site); },
-        "sphere file or (n, 4) array: molecular-surface faces inside get marker 3");
-    t.field("max_radius_edge", MOLMESH_FIELD(max_radius_edge_ratio),
-            "TetGen -q radius-edge ratio bound, [" + number(kMinRadiusEdgeRatio) + ", " +
-                number(kMaxRadiusEdgeRatio) + "]");
-    t.field("min_dihedral", MOLMESH_FIELD(min_dihedral_deg),
-            "TetGen -q minimum dihedral angle, degrees, [0, " + number(kMaxMinDihedralDeg) + "]");
-    t.field("max_volume", MOLMESH_FIELD(max_volume),
-            "TetGen -a largest tetrahedron volume, Å^3 (None: unbounded)");
-    t.field("size_factor", MOLMESH_FIELD(size_factor),
-            "size grading (TetGen -m): target size = mean edge length x factor, [0, " +
-                number(kMaxSizeFactor) + "] (0: off)");
-    t.field("tetgen_switches", MOLMESH_FIELD(tetgen_switches),
-            "expert: TetGen switches replacing the ones above");
+        doc_of(specs.active_site, "; a sphere file or an (n, 4) array"));
+    t.field(std::string(specs.max_radius_edge.name), MOLMESH_FIELD(max_radius_edge_ratio),
+            doc_of(specs.max_radius_edge));
+    t.field(std::string(specs.min_dihedral.name), MOLMESH_FIELD(min_dihedral_deg),
+            doc_of(specs.min_dihedral));
+    t.field(std::string(specs.max_volume.name), MOLMESH_FIELD(max_volume),
+            doc_of(specs.max_volume));
+    t.field(std::string(specs.size_factor.name), MOLMESH_FIELD(size_factor),
+            doc_of(specs.size_factor));
+    t.field(std::string(specs.tetgen_switches.name), MOLMESH_FIELD(tetgen_switches),
+            doc_of(specs.tetgen_switches));
     return t;
   }();
   return table;

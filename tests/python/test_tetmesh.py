@@ -132,3 +132,21 @@ def test_defaults_and_ranges_are_the_clis(tmp_path, cli_full):
         with pytest.raises(molmesh.Error, match=f"`{keyword}`"):
             molmesh.tetmesh(surface, **{keyword: beyond})
         run_cli("tetmesh", out / "s.ply", "-o", tmp_path / "x.m", flag, beyond, expect=2)
+
+
+def test_help_texts_are_the_clis():
+    """Each tetmesh keyword's docstring and its CLI flag's help are one text, the library's
+    (tetmesh/tetmesh_option_specs.hpp), in `tetmesh --help` and `hierarchy --help` alike."""
+    import re
+    lines = {line.strip().split(" = ")[0]: line.strip()
+             for line in molmesh.tetmesh.__doc__.splitlines() if " = " in line}
+    helps = [run_cli(command, "--help").stdout for command in ["tetmesh", "hierarchy"]]
+    for keyword in molmesh.defaults("tetmesh"):
+        text = lines[keyword].split(": ", 1)[1]
+        # Python names other options as keywords, the CLI as flags.
+        text = re.sub(r"`(\w+)`", lambda m: "--" + m[1].replace("_", "-"), text)[:40]
+        flag = "--" + keyword.replace("_", "-")
+        for cli_help, command in zip(helps, ["tetmesh", "hierarchy"]):
+            if keyword == "tetgen_switches" and command == "hierarchy":
+                continue  # tetmesh only
+            assert flag in cli_help and text in cli_help, (command, keyword, text)

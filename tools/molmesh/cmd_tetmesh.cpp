@@ -119,11 +119,7 @@ const CommandRegistration registration{
                       "radius-edge ratios, volumes), TetGen report, timings as JSON")
           ->type_name("FILE.json");
       add_volume_options(*cmd, args->volume, "");
-      cmd->add_option("--tetgen-switches", args->volume.tet.tetgen_switches,
-                      "Expert: TetGen switches replacing the ones above (e.g. pYq1.5/15); molmesh "
-                      "adds p, z, n and Q when missing. Without Y TetGen may split "
-                      "the molecular surface")
-          ->type_name("SW");
+      add_tetgen_switches_option(*cmd, args->volume.tet.tetgen_switches);
       cmd->add_option("--surface-output", args->surface_output,
                       "Also write the molecular surface that was meshed (atom input only)")
           ->type_name("FILE");

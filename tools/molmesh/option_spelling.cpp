@@ -1,28 +1,33 @@
 #include "option_spelling.hpp"
 
 #include "molmesh/core/error.hpp"
+#include "molmesh/tetmesh/tetmesh_option_specs.hpp"
 
 namespace molmesh::cli {
 
+std::string cli_flag(std::string_view name) {
+  std::string flag = "--" + std::string(name);
+  for (char& c : flag)
+    if (c == '_') c = '-';
+  return flag;
+}
+
 std::string with_cli_flags(std::string_view message) {
   // Library option (its struct member) -> flag; names without a flag stay backquoted.
-  static const OptionSpellings kFlags{
-      {"level", "--level"},
-      {"max_levels", "--levels"},
-      {"max_memory_bytes", "--max-memory"},
-      {"max_radius_edge_ratio", "--max-radius-edge"},
-      {"max_volume", "--max-volume"},
-      {"min_dihedral_deg", "--min-dihedral"},
-      {"outer_radius", "--outer-radius"},
-      {"outer_sphere_subdivisions", "--sphere-subdivisions"},
-      {"radii_file", "--radii"},
-      {"rings", "--rings"},
-      {"size_factor", "--size-factor"},
-      {"spacing", "--spacing"},
-      {"sphere_ratio", "--sphere-ratio"},
-      {"t0", "--t0"},
-      {"tetgen_switches", "--tetgen-switches"},
-  };
+  static const OptionSpellings kFlags = [] {
+    OptionSpellings flags{
+        {"level", "--level"},
+        {"max_levels", "--levels"},
+        {"max_memory_bytes", "--max-memory"},
+        {"radii_file", "--radii"},
+        {"rings", "--rings"},
+        {"spacing", "--spacing"},
+        {"t0", "--t0"},
+    };
+    for (const OptionSpec* spec : kTetMeshOptionSpecs.all())
+      flags.emplace(std::string(spec->member), cli_flag(spec->name));
+    return flags;
+  }();
   return spell_option_names(message, kFlags);
 }
 

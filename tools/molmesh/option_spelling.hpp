@@ -10,4 +10,8 @@ namespace molmesh::cli {
 // that flag (`size_factor` -> --size-factor, `max_levels` -> --levels).
 std::string with_cli_flags(std::string_view message);
 
+// The flag of an option the library names by its keyword (core/option_spec.hpp):
+// "max_radius_edge" -> "--max-radius-edge".
+std::string cli_flag(std::string_view name);
+
 }  // namespace molmesh::cli

@@ -1,7 +1,8 @@
 #pragma once
 // The command-line options of the volume stage (domain, outer sphere, active site, TetGen
-// quality and size bounds), shared by the tetmesh and hierarchy commands so each is spelled,
-// ranged and defaulted once: the defaults are TetMeshOptions' own.
+// quality and size bounds), shared by the tetmesh and hierarchy commands: names, help texts
+// and ranges are the library's (molmesh/tetmesh/tetmesh_option_specs.hpp, which the Python
+// module reads too), the defaults TetMeshOptions' own.
 #include <CLI/CLI.hpp>
 #include <string>
 
@@ -22,6 +23,9 @@ struct VolumeCliOptions {
 // what the active site does in this command beyond marking faces.
 void add_volume_options(CLI::App& cmd, VolumeCliOptions& options,
                         const std::string& active_site_help);
+
+// --tetgen-switches (tetmesh only).
+void add_tetgen_switches_option(CLI::App& cmd, std::string& switches);
 
 // The TetMeshOptions the options mean (the active-site file is read here); the memory
 // limit comes from the surface layer's --max-memory.
