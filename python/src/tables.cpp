@@ -6,6 +6,7 @@
 
 #include "arrays.hpp"
 #include "errors.hpp"
+#include "molmesh/core/option_spec.hpp"
 #include "molmesh/io/sphere_list.hpp"
 #include "molmesh/tetmesh/tetmesh_option_specs.hpp"
 
@@ -200,7 +201,8 @@ const OptionTable<HierarchyOptions>& hierarchy_table() {
     OptionTable<HierarchyOptions> t;
     t.field("t0", MOLMESH_FIELD(t0), "one level per coarsening threshold T0, finest first");
     t.field("size_growth", MOLMESH_FIELD(size_growth),
-            "level L meshes its volume with size_factor * size_growth^L");
+            "level L meshes its volume with size_factor * size_growth^L, " +
+                range_text({kMinSizeGrowth, kMaxSizeGrowth, false}));
     t.field("renumber", MOLMESH_FIELD(renumber), "reverse Cuthill-McKee on every volume mesh");
     t.nest(processing_table(), MOLMESH_FIELD(processing));
     t.nest(tetmesh_table(), MOLMESH_FIELD(tetmesh));

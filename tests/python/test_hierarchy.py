@@ -144,3 +144,15 @@ def test_not_a_hierarchy_is_an_input_error(tmp_path):
     with pytest.raises(molmesh.InputError) as info:
         molmesh.read_hierarchy(bogus)
     assert info.value.file == str(bogus)
+
+
+def test_size_growth_range_is_the_libraries(tmp_path, built):
+    """The library refuses a size growth outside [1, 10] (HierarchyOptions::validate), for
+    Python as for the CLI, which checks the same bounds while parsing (exit 2)."""
+    surface = built.levels[0].surface
+    for beyond in [0.999, 10.001]:
+        with pytest.raises(molmesh.Error, match="`size_growth`.*\\[1, 10\\]"):
+            molmesh.hierarchy(surface, size_growth=beyond)
+        run_cli("hierarchy", DATA / "1a1p.pqr", "-o", tmp_path / "h.h5", "--size-growth", beyond,
+                expect=2)
+    assert not (tmp_path / "h.h5").exists()

@@ -134,7 +134,7 @@ const CommandRegistration registration{
                       "Level L grades with --size-factor times this to the power L, so coarse "
                       "levels coarsen the far field too, not only the surface (1: same far field "
                       "on every level)")
-          ->check(finite_in(1.0, 10.0))
+          ->check(finite_in(kMinSizeGrowth, kMaxSizeGrowth))
           ->capture_default_str();
       cmd->add_flag("--no-renumber", args->no_renumber,
                     "Keep TetGen's vertex numbering (default: reverse Cuthill-McKee, permutation "

@@ -21,6 +21,7 @@ std::string with_cli_flags(std::string_view message) {
         {"max_memory_bytes", "--max-memory"},
         {"radii_file", "--radii"},
         {"rings", "--rings"},
+        {"size_growth", "--size-growth"},
         {"spacing", "--spacing"},
         {"t0", "--t0"},
     };

@@ -5,12 +5,14 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <exception>
 #include <string>
 #include <thread>
 #include <vector>
 
 #include "molmesh/core/error.hpp"
+#include "molmesh/core/option_spec.hpp"
 #include "molmesh/core/timing.hpp"
 #include "molmesh/hierarchy/renumber.hpp"
 #include "molmesh/tetmesh/markers.hpp"
@@ -29,21 +31,27 @@ void mark_surface(SurfaceMesh& surface, const std::vector<Sphere>& active_site) 
   }
 }
 
+void HierarchyOptions::validate() const {
+  if (t0.empty()) throw Error("hierarchy: give at least one T0 value (`t0`)");
+  for (std::size_t i = 0; i < t0.size(); ++i) {
+    if (!(t0[i] >= 0.0)) throw Error("hierarchy: T0 values (`t0`) must be >= 0");
+    if (i > 0 && t0[i] < t0[i - 1]) {
+      throw Error("hierarchy: T0 values (`t0`) must not decrease (level 0 is the finest)");
+    }
+  }
+  if (!std::isfinite(size_growth) || size_growth < kMinSizeGrowth || size_growth > kMaxSizeGrowth) {
+    char got[32];
+    std::snprintf(got, sizeof got, "%g", size_growth);
+    throw Error("hierarchy: the size growth per level (`size_growth`) must be a finite number in " +
+                range_text({kMinSizeGrowth, kMaxSizeGrowth, false}) + " (got " + got + ")");
+  }
+}
+
 Hierarchy build_hierarchy(const SurfaceMesh& surface, const Atoms& atoms,
                           const HierarchyOptions& options, const Reporter& reporter,
                           HierarchyReport* report) {
   const auto start = std::chrono::steady_clock::now();
-  if (options.t0.empty()) throw Error("hierarchy: give at least one T0 value (`t0`)");
-  for (std::size_t i = 0; i < options.t0.size(); ++i) {
-    if (!(options.t0[i] >= 0.0)) throw Error("hierarchy: T0 values must be >= 0");
-    if (i > 0 && options.t0[i] < options.t0[i - 1]) {
-      throw Error("hierarchy: T0 values must not decrease (level 0 is the finest)");
-    }
-  }
-  if (!(options.size_growth >= 1.0) || !std::isfinite(options.size_growth)) {
-    throw Error("hierarchy: the size growth per level must be a number >= 1 (got " +
-                std::to_string(options.size_growth) + ")");
-  }
+  options.validate();
   const int count = static_cast<int>(options.t0.size());
   // Progress: each level's surface + volume, then the transfers, as equal shares.
   const double share = 1.0 / (2.0 * count + 1.0);

@@ -17,6 +17,12 @@
 
 namespace molmesh {
 
+// The size_growth range HierarchyOptions::validate() accepts, for the front ends that check
+// values while parsing (the CLI's --size-growth) with the same bounds: 1 keeps the far field
+// of level 0 on every level; beyond 10 the fourth level's target size is 1000 x level 0's.
+inline constexpr double kMinSizeGrowth = 1.0;
+inline constexpr double kMaxSizeGrowth = 10.0;
+
 struct HierarchyOptions {
   // One level per value, finest first; must be non-decreasing and non-empty. The paper's
   // Fig. 11 series.
@@ -29,6 +35,11 @@ struct HierarchyOptions {
   // far field is most of the mesh (docs/hierarchy.md).
   double size_growth = 1.5;
   bool renumber = true;  // reverse Cuthill-McKee on every volume mesh
+
+  // Throws Error naming the option (`t0`, `size_growth`) when the T0 list is empty,
+  // negative or decreasing, or size_growth is not a finite number in [kMinSizeGrowth,
+  // kMaxSizeGrowth]; build_hierarchy() calls it first (tetmesh's own on every level).
+  void validate() const;
 };
 
 struct HierarchyLevelReport {
