@@ -145,6 +145,7 @@ void bind_hierarchy(py::module_& m) {
       "T0, each with its own surface processing, volume mesh and prolongation. As in the "
       "CLI, active_site spheres are also kept dense by coarsening on every level. Options "
       "(default):\n" +
+      keep_spheres_table().describe(SurfacePipelineOptions{}) +
       hierarchy_table().describe(HierarchyOptions{});
   m.def(
       "hierarchy",
@@ -157,16 +158,21 @@ void bind_hierarchy(py::module_& m) {
           active_site_file = py::cast<std::filesystem::path>(kw["active_site"]).string();
         HierarchyOptions options;
         hierarchy_table().take(kw, options);
-        // As `molmesh hierarchy --active-site`: the active site stays dense on every level.
-        options.processing.keep_spheres = options.tetmesh.active_site;
         const bool atoms_input = py::isinstance<PyAtoms>(input);
         SurfacePipelineOptions surface_options;
+        keep_spheres_table().take(kw, surface_options);
         if (atoms_input) {
           volume_table().take(kw, surface_options);
-          reject_unknown(kw, "hierarchy", names_of(hierarchy_table(), volume_table()));
+          reject_unknown(kw, "hierarchy",
+                         names_of(hierarchy_table(), keep_spheres_table(), volume_table()));
         } else {
-          reject_unknown(kw, "hierarchy", names_of(hierarchy_table()));
+          reject_unknown(kw, "hierarchy", names_of(hierarchy_table(), keep_spheres_table()));
         }
+        // As `molmesh hierarchy --keep-spheres --active-site`: both stay dense on every level.
+        options.processing.keep_spheres = all_keep_spheres(surface_options);
+        options.processing.keep_spheres.insert(options.processing.keep_spheres.end(),
+                                               options.tetmesh.active_site.begin(),
+                                               options.tetmesh.active_site.end());
         surface_options.raw = true;  // each level does its own processing with its own T0
         if (!atoms_input && !py::isinstance<PySurface>(input))
           throw py::type_error("hierarchy() takes molmesh.Atoms or a molmesh.Surface");
@@ -214,6 +220,7 @@ void bind_hierarchy(py::module_& m) {
       py::arg("input"), py::arg("atoms") = py::none(), doc.c_str());
   register_defaults("hierarchy", [] {
     py::dict d = volume_table().values(SurfacePipelineOptions{});
+    d.attr("update")(keep_spheres_table().values(SurfacePipelineOptions{}));
     d.attr("update")(hierarchy_table().values(HierarchyOptions{}));
     return d;
   });

@@ -120,6 +120,18 @@ const OptionTable<SurfacePipelineOptions>& surface_table() {
     t.nest(processing_table(), MOLMESH_FIELD(processing));
     t.field("raw", MOLMESH_FIELD(raw),
             "stop after marching cubes: no improvement, coarsening or smoothing");
+    t.nest(
+        keep_spheres_table(), [](SurfacePipelineOptions & o) -> auto& { return o; });
+    t.field("keep_volume", MOLMESH_FIELD(keep_volume),
+            "also return the blurred volume as report['volume'] (atom input)");
+    return t;
+  }();
+  return table;
+}
+
+const OptionTable<SurfacePipelineOptions>& keep_spheres_table() {
+  static const auto table = [] {
+    OptionTable<SurfacePipelineOptions> t;
     t.custom(
         "keep_spheres",
         [](SurfacePipelineOptions& o, py::handle v) {
@@ -137,8 +149,6 @@ const OptionTable<SurfacePipelineOptions>& surface_table() {
         },
         "sphere file or (n, 4) array (x, y, z, r in Å): no vertex inside is removed by "
         "coarsening");
-    t.field("keep_volume", MOLMESH_FIELD(keep_volume),
-            "also return the blurred volume as report['volume'] (atom input)");
     return t;
   }();
   return table;

@@ -17,6 +17,8 @@ const OptionTable<SurfacePipelineOptions>& volume_table();
 const OptionTable<ProcessingOptions>& processing_table();
 // molmesh.surface: volume_table + coarsen + processing_table + raw, keep_spheres, keep_volume.
 const OptionTable<SurfacePipelineOptions>& surface_table();
+// keep_spheres (a sphere file or an (n, 4) array), for surface() and hierarchy().
+const OptionTable<SurfacePipelineOptions>& keep_spheres_table();
 // molmesh.improve: t0, repair and processing options.
 const OptionTable<ImprovePipelineOptions>& improve_table();
 // molmesh.tetmesh: domain, outer sphere, TetGen bounds, active site.

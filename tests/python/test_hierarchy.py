@@ -156,3 +156,31 @@ def test_size_growth_range_is_the_libraries(tmp_path, built):
         run_cli("hierarchy", DATA / "1a1p.pqr", "-o", tmp_path / "h.h5", "--size-growth", beyond,
                 expect=2)
     assert not (tmp_path / "h.h5").exists()
+
+
+def test_keep_spheres_is_the_clis(tmp_path):
+    """keep_spheres= keeps a region dense on every level as `molmesh hierarchy --keep-spheres`
+    does (default: none, SurfacePipelineOptions'): the same levels bit for bit and the same
+    recorded parameters; an array keeps the same vertices as the file."""
+    atoms = molmesh.read_atoms(DATA / "1a1p.pqr")
+    # Around the atom farthest from the centre, so the sphere holds surface vertices.
+    positions = atoms.positions
+    far = positions[np.argmax(np.linalg.norm(positions - positions.mean(axis=0), axis=1))]
+    spheres = tmp_path / "keep.txt"
+    spheres.write_text(f"{far[0]} {far[1]} {far[2]} 6\n")
+    run_cli("hierarchy", DATA / "1a1p.pqr", "-o", tmp_path / "h.h5", "--t0", "0.2,0.6",
+            "--domain", "interior", "--keep-spheres", spheres)
+    cli = molmesh.read_hierarchy(tmp_path / "h.h5")
+    assert molmesh.defaults("hierarchy")["keep_spheres"] is None
+    from_file = molmesh.hierarchy(atoms, t0=[0.2, 0.6], domain="interior", keep_spheres=spheres)
+    from_array = molmesh.hierarchy(atoms, t0=[0.2, 0.6], domain="interior",
+                                   keep_spheres=molmesh.read_spheres(spheres))
+    plain = molmesh.hierarchy(atoms, t0=[0.2, 0.6], domain="interior")
+    for mine, array, theirs in zip(from_file.levels, from_array.levels, cli.levels):
+        assert np.array_equal(mine.surface.vertices, theirs.surface.vertices)
+        assert np.array_equal(array.surface.vertices, theirs.surface.vertices)
+        assert_same_tetmesh(mine.volume, theirs.volume)
+    assert from_file.parameters == cli.parameters
+    assert cli.parameters["keep_spheres"] == str(spheres)
+    # The spheres matter: without them the coarse level has fewer surface vertices.
+    assert len(plain.levels[-1].surface.vertices) < len(cli.levels[-1].surface.vertices)

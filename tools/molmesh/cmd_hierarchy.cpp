@@ -13,7 +13,6 @@
 #include "molmesh/io/hierarchy_hdf5.hpp"
 #include "molmesh/io/read_atoms.hpp"
 #include "molmesh/io/sha256.hpp"
-#include "molmesh/io/sphere_list.hpp"
 #include "molmesh/io/stats_json.hpp"
 #include "molmesh/pipeline/hierarchy_parameters.hpp"
 #include "molmesh/pipeline/report_json.hpp"
@@ -52,10 +51,7 @@ void run(const HierarchyArgs& args, const CliContext& ctx) {
   options.t0 = pipeline.processing.t0;
   options.processing = pipeline.processing;  // its t0 is replaced by one T0 per level
   if (keeps_on_surface(pipeline)) options.processing.project = surface.projection;
-  if (!pipeline.keep_spheres_file.empty()) {
-    for (const Sphere& s : read_spheres(pipeline.keep_spheres_file))
-      options.processing.keep_spheres.push_back(s);
-  }
+  options.processing.keep_spheres = all_keep_spheres(pipeline);
   options.tetmesh = volume_options(args.volume, pipeline.blur.max_memory_bytes);
   // The active site stays dense on every level (paper Fig. 5).
   options.processing.keep_spheres.insert(options.processing.keep_spheres.end(),

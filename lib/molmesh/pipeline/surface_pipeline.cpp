@@ -125,6 +125,14 @@ double level_of(const SurfacePipelineOptions& options) {
   return options.surface == SurfaceKind::kGaussian ? options.isovalue : 0.0;
 }
 
+std::vector<Sphere> all_keep_spheres(const SurfacePipelineOptions& options) {
+  std::vector<Sphere> spheres = options.processing.keep_spheres;
+  if (!options.keep_spheres_file.empty()) {
+    for (const Sphere& s : read_spheres(options.keep_spheres_file)) spheres.push_back(s);
+  }
+  return spheres;
+}
+
 Grid surface_volume(const Atoms& atoms, const SurfacePipelineOptions& options,
                     const Reporter& reporter) {
   switch (options.surface) {

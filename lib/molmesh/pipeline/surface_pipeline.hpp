@@ -89,6 +89,11 @@ bool keeps_on_surface(const SurfacePipelineOptions& options);
 
 double level_of(const SurfacePipelineOptions& options);
 
+// The spheres coarsening must keep dense: options.processing.keep_spheres, then those of
+// options.keep_spheres_file (read here; InputError when it cannot be). For the stages that
+// process the surface themselves (the hierarchy's levels).
+std::vector<Sphere> all_keep_spheres(const SurfacePipelineOptions& options);
+
 SurfacePipelineResult surface_from_atoms(const Atoms& atoms, const SurfacePipelineOptions& options,
                                          const Reporter& reporter = {});
 SurfacePipelineResult surface_from_grid(const Grid& grid, const SurfacePipelineOptions& options,
