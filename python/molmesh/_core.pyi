@@ -161,7 +161,8 @@ def surface(input: Union[Atoms, Volume], *, progress: Progress = None,
             coarsen: Sequence[float] = ..., rings: int = ..., alpha: float = ...,
             beta: float = ..., sweeps: int = ..., feature_weight: float = ...,
             smooth_iterations: int = ..., flips: bool = ..., cleanup_rounds: int = ...,
-            raw: bool = ..., keep_spheres: Spheres = ..., keep_volume: bool = ...) -> Surface: ...
+            raw: bool = ..., keep_spheres: Spheres = ..., keep_volume: bool = ...,
+            measure: bool = ...) -> Surface: ...
 
 def improve(vertices_or_surface: Union[Surface, npt.ArrayLike],
             faces: Optional[npt.ArrayLike] = None, *, progress: Progress = None,

@@ -3,8 +3,12 @@
 
 Both sides read the molecule, run the surface pipeline with default options and write
 the mesh (.off); the CLI is timed as a whole process, Python as read_atoms + surface +
-write inside one interpreter (the module is imported once, before timing). Runs
-alternate (CLI, Python, CLI, ...) so load drifts hit both; medians are reported.
+write inside one interpreter (the module is imported once, before timing). Two pairs, each
+the same work on both sides:
+  measured    Python's default (per-stage stats and distances in .report) against the CLI
+              with --stats;
+  unmeasured  measure=False against the CLI's default (no --stats).
+Runs alternate (CLI, Python, CLI, ...) so load drifts hit both; medians are reported.
 
   PYTHONPATH=build/python /usr/bin/python3 tests/benchmarks/python_surface_bench.py \
       --cli build/tools/molmesh --input tests/data/mache.pqr --runs 3
@@ -21,43 +25,43 @@ import time
 import molmesh
 
 
+def run_pair(args, tmp, measured):
+    cli_out = os.path.join(tmp, "cli.off")
+    py_out = os.path.join(tmp, "py.off")
+    stats = ["--stats", os.path.join(tmp, "cli.json")] if measured else []
+    cli_s, py_s = [], []
+    for _ in range(args.runs):
+        start = time.perf_counter()
+        subprocess.run([args.cli, "-q", "surface", args.input, "-o", cli_out] + stats,
+                       check=True)
+        cli_s.append(time.perf_counter() - start)
+        start = time.perf_counter()
+        atoms = molmesh.read_atoms(args.input)
+        surface = molmesh.surface(atoms, measure=measured)
+        surface.write(py_out)
+        py_s.append(time.perf_counter() - start)
+    cli, py = statistics.median(cli_s), statistics.median(py_s)
+    return {
+        "cli_wall_s": cli_s,
+        "python_wall_s": py_s,
+        "cli_median_s": cli,
+        "python_median_s": py,
+        "python_over_cli": py / cli,
+        "identical_output": open(cli_out, "rb").read() == open(py_out, "rb").read(),
+    }
+
+
 def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("--cli", required=True)
     parser.add_argument("--input", required=True)
     parser.add_argument("--runs", type=int, default=3)
     args = parser.parse_args()
-
-    cli_s, py_s, py_stage_s = [], [], []
+    result = {"input": args.input, "runs": args.runs}
     with tempfile.TemporaryDirectory() as tmp:
-        cli_out = os.path.join(tmp, "cli.off")
-        py_out = os.path.join(tmp, "py.off")
-        for _ in range(args.runs):
-            start = time.perf_counter()
-            subprocess.run([args.cli, "-q", "surface", args.input, "-o", cli_out], check=True)
-            cli_s.append(time.perf_counter() - start)
-
-            start = time.perf_counter()
-            atoms = molmesh.read_atoms(args.input)
-            surface = molmesh.surface(atoms)
-            surface.write(py_out)
-            py_s.append(time.perf_counter() - start)
-            py_stage_s.append(sum(s["seconds"] for s in surface.report["stages"]))
-        same = open(cli_out, "rb").read() == open(py_out, "rb").read()
-
-    cli, py = statistics.median(cli_s), statistics.median(py_s)
-    result = {
-        "input": args.input,
-        "runs": args.runs,
-        "cli_wall_s": cli_s,
-        "python_wall_s": py_s,
-        "python_pipeline_stages_s": py_stage_s,
-        "cli_median_s": cli,
-        "python_median_s": py,
-        "python_over_cli": py / cli,
-        "identical_output": same,
-        "load_average": os.getloadavg(),
-    }
+        result["measured"] = run_pair(args, tmp, True)
+        result["unmeasured"] = run_pair(args, tmp, False)
+    result["load_average"] = os.getloadavg()
     json.dump(result, sys.stdout, indent=2)
     print()
 

@@ -36,6 +36,17 @@ def test_default_surface_is_the_clis_bit_for_bit(fas2_surface, fas2_cli_surface)
     assert surf.report["levelset_distance_max"] == cli_stats["levelset_distance_max"]
 
 
+def test_unmeasured_surface_is_the_same_without_stage_stats(fas2_surface, fas2_atoms):
+    """measure=False (the CLI without --stats) skips the per-stage stats and distances, and
+    only those: the surface is the same bit for bit, .stats() still works."""
+    surf = molmesh.surface(fas2_atoms, measure=False)
+    assert_same_mesh(surf, fas2_surface)
+    assert surf.stats() == fas2_surface.stats()
+    assert all(s["stats"] is None for s in surf.report["stages"])
+    assert "levelset_distance_max" not in surf.report
+    assert molmesh.defaults("surface")["measure"] is True
+
+
 def test_stats_keys_are_the_clis(fas2_surface, fas2_cli_surface):
     """Surface.stats() and .report together have the keys of `--stats` (one writer each:
     io/stats_json.hpp, pipeline/report_json.hpp); the CLI adds its run's timings and input."""

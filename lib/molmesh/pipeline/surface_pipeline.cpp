@@ -95,7 +95,8 @@ void extract_and_process(const Grid& grid, double level, const SurfacePipelineOp
   }
   ProcessingResult processed = process_surface(result.raw, processing, reporter);
   for (ProcessingStage& stage : processed.stages)
-    result.stages.push_back({std::move(stage.name), stage.seconds, stage.stats});
+    result.stages.push_back({std::move(stage.name), stage.seconds,
+                             processing.record_stages ? std::optional(stage.stats) : std::nullopt});
   if (options.measure) {
     start = Clock::now();
     result.dislocation = measure_dislocation(processed.mesh, result.raw);
