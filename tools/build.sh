@@ -1,11 +1,11 @@
 #!/usr/bin/env bash
 # One entry point for a fresh Debian 12 machine:
 #   tools/build.sh demo   install packages, build (Release), mesh the bundled molecule
-#   tools/build.sh test   install packages, build (Release), run every test (slow ones too);
-#                         MOLMESH_SANITIZE=readers adds the reader tests and fuzz-corpus
-#                         replays under ASan/UBSan (build-asan-readers), MOLMESH_SANITIZE=1
-#                         the whole fast suite and bounded fuzz runs (build-asan); the
-#                         default 0 adds neither (docs/testing.md)
+#   tools/build.sh test   install packages, build (Release), run every test (slow ones too),
+#                         then the reader tests and fuzz-corpus replays under ASan/UBSan
+#                         (build-asan-readers; MOLMESH_SANITIZE=readers, the default);
+#                         MOLMESH_SANITIZE=1 runs the whole fast suite and bounded fuzz runs
+#                         under them instead (build-asan), 0 neither (docs/testing.md)
 #   tools/build.sh build  install packages and build only
 # Re-running is cheap: apt skips what is installed and the build is incremental.
 set -euo pipefail
@@ -37,9 +37,9 @@ build() {
 # UndefinedBehaviorSanitizer and libstdc++ assertions, with clang so the reader fuzz targets
 # link libFuzzer; any sanitizer report fails (halt on the first one). Leaks inside Debian
 # libraries are suppressed in tools/sanitizers/lsan.supp, nothing else.
-#   readers (what `test` runs by default, so CI): only the library, the reader tests
-#     (molmesh_tests_io_readers) and the fuzz targets, in build-asan-readers; runs the reader
-#     tests and the fuzz-corpus replays.
+#   readers (MOLMESH_SANITIZE=readers, what `test` runs by default, so CI): only the library,
+#     the reader tests (molmesh_tests_io_readers) and the fuzz targets, in build-asan-readers;
+#     runs the reader tests and the fuzz-corpus replays.
 #   full (MOLMESH_SANITIZE=1): everything but benchmarks and Python, in build-asan; runs the
 #     fast suite, the fuzz-corpus replays and a bounded fuzz run per reader. Too slow for CI's
 #     30 min on 2 cores (docs/testing.md has the measurements).
@@ -97,7 +97,7 @@ case "$mode" in
     ;;
   test)
     (cd "$build_dir" && ctest --output-on-failure -j "$jobs" --timeout 1500)
-    case "${MOLMESH_SANITIZE:-0}" in
+    case "${MOLMESH_SANITIZE:-readers}" in
       1) sanitize_full ;;
       0) ;;
       readers) sanitize_readers ;;
