@@ -9,6 +9,7 @@
 #include "molmesh/core/error.hpp"
 #include "molmesh/io/read_atoms.hpp"
 #include "molmesh/surface/point_in_mesh.hpp"
+#include "molmesh/volume/gaussian_field.hpp"
 #include "molmesh/volume/level_set_projection.hpp"
 
 namespace molmesh {
@@ -105,6 +106,41 @@ TEST(SurfacePipeline, LoneAtomStaysOnItsSphere) {
   for (const Vec3& p : result.surface.points)
     worst = std::max(worst, std::abs((p - atom.center).norm() - atom.radius));
   EXPECT_LT(worst, 1e-3);
+}
+
+// Issue 13: an ellipsoid-like blob of two atoms. Coarsening thins out its flat flanks but must
+// keep its curved tips: each tip of the processed surface lies where Eq. 1 puts it (a removed
+// tip vertex would leave a flat cap up to a chord error inside), and no facet cuts through the
+// volume by more than the 0.15 Å floor.
+TEST(SurfacePipeline, TwoAtomBlobKeepsItsTips) {
+  Atom left, right;
+  left.center = Vec3(-1.6, 0.1, 0.0);
+  right.center = Vec3(1.6, 0.1, 0.0);
+  left.radius = right.radius = 1.6;
+  const Atoms atoms{left, right};
+  SurfacePipelineOptions options;
+  const SurfacePipelineResult result = surface_from_atoms(atoms, options);
+  ASSERT_TRUE(result.level_set_distance.has_value());
+  EXPECT_LT(result.level_set_distance->vertex_max, 1e-3);
+  EXPECT_LT(result.level_set_distance->centroid_max, 0.15);
+  EXPECT_LT(result.surface.points.size(), result.raw.points.size() / 2);  // coarsened
+
+  // The tips of the exact surface: F = 1 on the axis, by bisection (F falls along it).
+  BlurOptions blur = options.blur;
+  blur.isovalue = options.isovalue;
+  const GaussianField field(atoms, blur);
+  const auto tip = [&](double direction) {
+    double inside = 1.6, outside = 8.0;
+    for (int i = 0; i < 60; ++i) {
+      const double mid = (inside + outside) / 2;
+      (field.value(Vec3(direction * mid, 0.1, 0.0)) > options.isovalue ? inside : outside) = mid;
+    }
+    return direction * inside;
+  };
+  double lo = 1e9, hi = -1e9;
+  for (const Vec3& p : result.surface.points) lo = std::min(lo, p.x()), hi = std::max(hi, p.x());
+  EXPECT_NEAR(hi, tip(+1.0), 0.02);
+  EXPECT_NEAR(lo, tip(-1.0), 0.02);
 }
 
 }  // namespace
