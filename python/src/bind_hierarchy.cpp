@@ -11,6 +11,7 @@
 #include "hierarchy_objects.hpp"
 #include "molmesh/io/hierarchy_hdf5.hpp"
 #include "molmesh/pipeline/hierarchy_parameters.hpp"
+#include "molmesh/pipeline/hierarchy_surface.hpp"
 #include "molmesh/pipeline/report_json.hpp"
 #include "progress.hpp"
 #include "surface_objects.hpp"
@@ -168,12 +169,6 @@ void bind_hierarchy(py::module_& m) {
         } else {
           reject_unknown(kw, "hierarchy", names_of(hierarchy_table(), keep_spheres_table()));
         }
-        // As `molmesh hierarchy --keep-spheres --active-site`: both stay dense on every level.
-        options.processing.keep_spheres = all_keep_spheres(surface_options);
-        options.processing.keep_spheres.insert(options.processing.keep_spheres.end(),
-                                               options.tetmesh.active_site.begin(),
-                                               options.tetmesh.active_site.end());
-        surface_options.raw = true;  // each level does its own processing with its own T0
         if (!atoms_input && !py::isinstance<PySurface>(input))
           throw py::type_error("hierarchy() takes molmesh.Atoms or a molmesh.Surface");
         std::shared_ptr<const Atoms> atoms;
@@ -192,11 +187,15 @@ void bind_hierarchy(py::module_& m) {
         Out out = bridge.run([&](const Reporter& r) {
           Out o;
           std::shared_ptr<const SurfaceMesh> s = surface;
+          // As `molmesh hierarchy` (one library function for both): the keep spheres and
+          // the active site stay dense on every level, vertices stay on the surface.
           if (!s) {
-            SurfacePipelineResult result = surface_from_atoms(*atoms, surface_options, r);
-            // As `molmesh hierarchy`: every level's processing keeps vertices on the surface.
-            if (keeps_on_surface(surface_options)) options.processing.project = result.projection;
+            SurfacePipelineResult result =
+                surface_from_atoms(*atoms, hierarchy_surface_options(surface_options), r);
+            process_levels_as(options, surface_options, result.projection);
             s = std::make_shared<const SurfaceMesh>(std::move(result.surface));
+          } else {
+            process_levels_as(options, surface_options, {});
           }
           o.hierarchy = std::make_shared<Hierarchy>(
               build_hierarchy(*s, atoms ? *atoms : kNoAtoms, options, r, &o.report));

@@ -15,6 +15,7 @@
 #include "molmesh/io/sha256.hpp"
 #include "molmesh/io/stats_json.hpp"
 #include "molmesh/pipeline/hierarchy_parameters.hpp"
+#include "molmesh/pipeline/hierarchy_surface.hpp"
 #include "molmesh/pipeline/report_json.hpp"
 #include "molmesh/pipeline/surface_pipeline.hpp"
 #include "option_checks.hpp"
@@ -42,21 +43,14 @@ void run(const HierarchyArgs& args, const CliContext& ctx) {
   const Atoms atoms = read_atoms(args.input, args.surface.atoms, reporter);
   const SurfacePipelineOptions& pipeline = args.surface.pipeline;
 
-  SurfacePipelineOptions surface_options = pipeline;
-  surface_options.raw = true;  // each level does its own processing with its own T0
-  surface_options.measure = false;
-  const auto surface = surface_from_atoms(atoms, surface_options, reporter);
+  const auto surface = surface_from_atoms(atoms, hierarchy_surface_options(pipeline), reporter);
 
   HierarchyOptions options;
+  // The shared layer's coarsening thresholds are the levels' (--t0).
   options.t0 = pipeline.processing.t0;
   options.processing = pipeline.processing;  // its t0 is replaced by one T0 per level
-  if (keeps_on_surface(pipeline)) options.processing.project = surface.projection;
-  options.processing.keep_spheres = all_keep_spheres(pipeline);
   options.tetmesh = volume_options(args.volume, pipeline.blur.max_memory_bytes);
-  // The active site stays dense on every level (paper Fig. 5).
-  options.processing.keep_spheres.insert(options.processing.keep_spheres.end(),
-                                         options.tetmesh.active_site.begin(),
-                                         options.tetmesh.active_site.end());
+  process_levels_as(options, pipeline, surface.projection);
   options.size_growth = args.size_growth;
   options.renumber = !args.no_renumber;
 
