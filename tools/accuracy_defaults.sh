@@ -21,5 +21,5 @@ import json,sys
 tag,s0,s1,b0,b1=sys.argv[1],*map(float,sys.argv[2:])
 s=json.load(open(f"s_{tag}.json")); b=json.load(open(f"b_{tag}.json"))
 k=s["rate_constant_M-1s-1"]; dg=b["solvation_energy_kJ_per_mol"]
-print(f"{tag}: sphere {100*(k/8.4085e9-1):+.2f}% ({s['tetrahedra']} tets, hier {s1-s0:.1f}s, solve {s['total_time_s']:.2f}s) | born {100*(dg/-228.61-1):+.2f}% ({b['tetrahedra']} tets, hier {b1-b0:.1f}s, solve {b['total_time_s']:.2f}s)")
+print(f"{tag}: sphere {100*(k/8.4085e9-1):+.2f}% ({s['tetrahedra']} tets, hier {s1-s0:.1f}s, solve {s['total_time_s']:.2f}s, {s['iterations']} it) | born {100*(dg/-228.61-1):+.2f}% ({b['tetrahedra']} tets, hier {b1-b0:.1f}s, solve {b['total_time_s']:.2f}s, {b['iterations']} it)")
 PY

@@ -62,9 +62,9 @@ inline constexpr TetMeshOptionSpecs kTetMeshOptionSpecs{
                    "TetGen -a: largest tetrahedron volume in Å^3 (default: unbounded)",
                    OptionRange{0.0, std::numeric_limits<double>::infinity(), true}},
     .size_factor = {"size_factor", "size_factor",
-                    "Size grading (TetGen -m): tetrahedra near an input vertex aim at its mean "
-                    "edge length times this factor, interpolated between the molecular surface "
-                    "and the outer sphere; smaller: finer near the surface; 0: no grading",
+                    "Size field (TetGen -m) times this factor: 1.5 edge lengths at the "
+                    "molecular surface, 0.09 R (r/R)^1.2 in the solvent (R the molecule's "
+                    "volume-equivalent radius); smaller: finer everywhere; 0: no grading",
                     OptionRange{0.0, kMaxSizeFactor, false}},
     .tetgen_switches = {"tetgen_switches", "tetgen_switches",
                         "Expert: TetGen switches replacing the ones above (e.g. pYq1.5/15); "

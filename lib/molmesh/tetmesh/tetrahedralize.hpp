@@ -56,12 +56,11 @@ struct TetMeshOptions {
   double max_radius_edge_ratio = 2.0;
   double min_dihedral_deg = 10.0;
   std::optional<double> max_volume;  // Å³, TetGen -a (uniform upper bound)
-  // Size grading (TetGen -m). Each input vertex (molecular surface, outer sphere) gets a
-  // target size: the mean length of its edges × size_factor; TetGen interpolates the sizes
-  // of its vertices to new points, so tetrahedra grow from the surface's edge length near
-  // the molecule to the outer sphere's far out (h roughly ∝ distance, the grading a 1/r
-  // field wants). 0 switches grading off: then only the radius-edge bound grades the mesh,
-  // which leaves the tetrahedra next to the surface several times larger than its edges.
+  // Size field (TetGen -m, tetmesh/size_field.hpp) × size_factor: 1.5 × the mean edge
+  // length at each molecular-surface vertex, h = 0.09 R (r/R)^1.2 through the solvent of
+  // exterior and full meshes (a background mesh), the grading that equidistributes the P1
+  // energy error of a 1/r field. 0 switches grading off: then only the radius-edge bound
+  // grades the mesh, which leaves the tetrahedra next to the surface several times larger.
   double size_factor = 1.0;
   // Expert override: replaces every switch molmesh would choose (besides Q, which is
   // always added so TetGen stays silent). Must keep the meaning of the result a PLC mesh
