@@ -8,6 +8,9 @@
 #include "errors.hpp"
 #include "molmesh/core/option_spec.hpp"
 #include "molmesh/io/sphere_list.hpp"
+#include "molmesh/pipeline/improve_option_specs.hpp"
+#include "molmesh/pipeline/surface_option_specs.hpp"
+#include "molmesh/processing/processing_option_specs.hpp"
 #include "molmesh/tetmesh/tetmesh_option_specs.hpp"
 
 namespace molmesh::python {
@@ -48,6 +51,15 @@ std::string doc_of(const OptionSpec& spec, const std::string& suffix = "") {
   return doc;
 }
 
+// The docstring line of an option whose range the library does not check (no validate()):
+// its help text with keywords for members, then `suffix`.
+std::string help_of(const OptionSpec& spec, const std::string& suffix = "") {
+  return with_keywords(spec.help) + suffix;
+}
+
+// The spec's keyword.
+std::string key(const OptionSpec& spec) { return std::string(spec.name); }
+
 }  // namespace
 
 bool is_path(const py::handle& v) {
@@ -56,34 +68,24 @@ bool is_path(const py::handle& v) {
 
 const OptionTable<SurfacePipelineOptions>& volume_table() {
   static const auto table = [] {
+    const SurfaceOptionSpecs& specs = kSurfaceOptionSpecs;
     OptionTable<SurfacePipelineOptions> t;
     std::vector<std::pair<std::string, SurfaceKind>> kinds;
     for (SurfaceKind kind : kSurfaceKinds) kinds.emplace_back(surface_kind_name(kind), kind);
-    t.choice("surface", MOLMESH_FIELD(surface), kinds,
-             "which surface of the atoms: the paper's blurred 'gaussian' (blobbyness, "
-             "isovalue), or the solvent-excluded 'ses', solvent-accessible 'sas' or van der "
-             "Waals 'vdw' surface (docs/surface.md)");
-    t.field("probe_radius", MOLMESH_FIELD(probe_radius),
-            "solvent probe radius of the ses and sas surfaces, Å (1.4: water)");
-    t.field("keep_on_surface", MOLMESH_FIELD(keep_on_surface),
-            "project vertices back onto the surface after every processing move; None: on for "
-            "'gaussian' (onto Eq. 1, exactly), off for ses, sas, vdw (it costs angle quality "
-            "at their creases; docs/processing.md)");
-    t.field("spacing", MOLMESH_FIELD(blur.spacing),
-            "grid spacing of the blurred volume, Å (smaller: finer surface, more memory)");
-    t.field("blobbyness", MOLMESH_FIELD(blur.blobbyness),
-            "blobbyness B < 0 of the Gaussian kernel exp(B(|x-c|^2/r^2 - 1)) for atoms without "
-            "their own");
-    t.field("isovalue", MOLMESH_FIELD(isovalue),
-            "level of the blurred volume that is the surface (1 on a lone atom's sphere)");
-    t.field("truncation", MOLMESH_FIELD(blur.truncation),
-            "kernel cut off below truncation * isovalue");
-    t.choice("blur", MOLMESH_FIELD(blur_method),
+    t.choice(key(specs.surface), MOLMESH_FIELD(surface), kinds, help_of(specs.surface));
+    t.field(key(specs.probe_radius), MOLMESH_FIELD(probe_radius), help_of(specs.probe_radius));
+    t.field(key(specs.keep_on_surface), MOLMESH_FIELD(keep_on_surface),
+            help_of(specs.keep_on_surface, "; None: the kind's default"));
+    t.field(key(specs.spacing), MOLMESH_FIELD(blur.spacing), help_of(specs.spacing));
+    t.field(key(specs.blobbyness), MOLMESH_FIELD(blur.blobbyness), help_of(specs.blobbyness));
+    t.field(key(specs.isovalue), MOLMESH_FIELD(isovalue), help_of(specs.isovalue));
+    t.field(key(specs.truncation), MOLMESH_FIELD(blur.truncation), help_of(specs.truncation));
+    t.choice(key(specs.blur), MOLMESH_FIELD(blur_method),
              std::vector<std::pair<std::string, BlurMethod>>{{"exact", BlurMethod::kExact},
                                                              {"fast", BlurMethod::kFast}},
-             "Eq. 1 summed atom by atom, or Eq. 2 with one decay rate and a recursive filter");
-    t.field("min_cavity_volume", MOLMESH_FIELD(min_cavity_volume),
-            "drop interior cavities enclosing less than this, Å^3 (0 keeps all)");
+             help_of(specs.blur));
+    t.field(key(specs.min_cavity_volume), MOLMESH_FIELD(min_cavity_volume),
+            help_of(specs.min_cavity_volume));
     return t;
   }();
   return table;
@@ -91,20 +93,19 @@ const OptionTable<SurfacePipelineOptions>& volume_table() {
 
 const OptionTable<ProcessingOptions>& processing_table() {
   static const auto table = [] {
+    const ProcessingOptionSpecs& specs = kProcessingOptionSpecs;
     OptionTable<ProcessingOptions> t;
-    t.field("rings", MOLMESH_FIELD(rings),
-            "k-ring of the local structure tensor that detects features");
-    t.field("alpha", MOLMESH_FIELD(alpha), "Eq. 6 exponent of the longest incident edge");
-    t.field("beta", MOLMESH_FIELD(beta), "Eq. 6 exponent of lambda2/lambda1 (curvature)");
-    t.field("sweeps", MOLMESH_FIELD(improve.sweeps),
-            "passes of angle-based quality improvement per round");
-    t.field("feature_weight", MOLMESH_FIELD(improve.feature_weight),
-            "how strongly feature vertices are held in place during improvement");
-    t.field("smooth_iterations", MOLMESH_FIELD(smoothing.normal_iterations),
-            "normal-diffusion iterations of the smoothing (0: none)");
-    t.field("flips", MOLMESH_FIELD(flips), "flip edges to raise angles");
-    t.field("cleanup_rounds", MOLMESH_FIELD(cleanup_rounds),
-            "final rounds of improvement and flips aimed at the worst triangles");
+    t.field(key(specs.rings), MOLMESH_FIELD(rings), help_of(specs.rings));
+    t.field(key(specs.alpha), MOLMESH_FIELD(alpha), help_of(specs.alpha));
+    t.field(key(specs.beta), MOLMESH_FIELD(beta), help_of(specs.beta));
+    t.field(key(specs.sweeps), MOLMESH_FIELD(improve.sweeps), help_of(specs.sweeps));
+    t.field(key(specs.feature_weight), MOLMESH_FIELD(improve.feature_weight),
+            help_of(specs.feature_weight));
+    t.field(key(specs.smooth_iterations), MOLMESH_FIELD(smoothing.normal_iterations),
+            help_of(specs.smooth_iterations));
+    t.field(key(specs.flips), MOLMESH_FIELD(flips), help_of(specs.flips));
+    t.field(key(specs.cleanup_rounds), MOLMESH_FIELD(cleanup_rounds),
+            help_of(specs.cleanup_rounds));
     return t;
   }();
   return table;
@@ -115,11 +116,10 @@ const OptionTable<SurfacePipelineOptions>& surface_table() {
     OptionTable<SurfacePipelineOptions> t;
     t.nest(
         volume_table(), [](SurfacePipelineOptions & o) -> auto& { return o; });
-    t.field("coarsen", MOLMESH_FIELD(processing.t0),
-            "coarsening thresholds T0 of Eq. 6, one round each ([] = improve only)");
+    t.field(key(kSurfaceOptionSpecs.coarsen), MOLMESH_FIELD(processing.t0),
+            help_of(kSurfaceOptionSpecs.coarsen, " ([])"));
     t.nest(processing_table(), MOLMESH_FIELD(processing));
-    t.field("raw", MOLMESH_FIELD(raw),
-            "stop after marching cubes: no improvement, coarsening or smoothing");
+    t.field(key(kSurfaceOptionSpecs.raw), MOLMESH_FIELD(raw), help_of(kSurfaceOptionSpecs.raw));
     t.nest(
         keep_spheres_table(), [](SurfacePipelineOptions & o) -> auto& { return o; });
     t.field("keep_volume", MOLMESH_FIELD(keep_volume),
@@ -136,7 +136,7 @@ const OptionTable<SurfacePipelineOptions>& keep_spheres_table() {
   static const auto table = [] {
     OptionTable<SurfacePipelineOptions> t;
     t.custom(
-        "keep_spheres",
+        key(kSurfaceOptionSpecs.keep_spheres),
         [](SurfacePipelineOptions& o, py::handle v) {
           o.keep_spheres_file.clear();
           o.processing.keep_spheres.clear();
@@ -150,8 +150,7 @@ const OptionTable<SurfacePipelineOptions>& keep_spheres_table() {
           if (!o.keep_spheres_file.empty()) return py::str(o.keep_spheres_file);
           return spheres_array(o.processing.keep_spheres);
         },
-        "sphere file or (n, 4) array (x, y, z, r in Å): no vertex inside is removed by "
-        "coarsening");
+        help_of(kSurfaceOptionSpecs.keep_spheres, "; a sphere file or an (n, 4) array"));
     return t;
   }();
   return table;
@@ -160,12 +159,12 @@ const OptionTable<SurfacePipelineOptions>& keep_spheres_table() {
 const OptionTable<ImprovePipelineOptions>& improve_table() {
   static const auto table = [] {
     OptionTable<ImprovePipelineOptions> t;
-    t.field("t0", MOLMESH_FIELD(processing.t0),
-            "coarsening thresholds T0 of Eq. 6, one round each ([] = no coarsening)");
+    const ImproveOptionSpecs& specs = kImproveOptionSpecs;
+    t.field(key(specs.t0), MOLMESH_FIELD(processing.t0), help_of(specs.t0, " ([])"));
     t.nest(processing_table(), MOLMESH_FIELD(processing));
-    t.field("repair_only", MOLMESH_FIELD(repair_only), "repair without any processing");
-    t.field("merge_tolerance", MOLMESH_FIELD(repair.merge_tolerance),
-            "vertices closer than this (Å) are merged during repair");
+    t.field(key(specs.repair_only), MOLMESH_FIELD(repair_only), help_of(specs.repair_only));
+    t.field(key(specs.merge_tolerance), MOLMESH_FIELD(repair.merge_tolerance),
+            help_of(specs.merge_tolerance));
     return t;
   }();
   return table;

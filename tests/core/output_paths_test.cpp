@@ -19,7 +19,7 @@
 
 #include "molmesh/core/atomic_file.hpp"
 #include "molmesh/core/error.hpp"
-#include "support/cli_exit.hpp"
+#include "support/cli.hpp"
 
 namespace molmesh {
 namespace {
@@ -82,13 +82,13 @@ TEST(OutputPaths, FifoIsWrittenInPlace) {
 TEST(OutputPaths, DevFullIsExitCode4) {
   // The mesh formats are chosen by extension, so the device is given as the --stats file.
   const auto dir = scratch("devfull");
-  const auto s = test::run_molmesh("surface " + kFas2 + " --raw -o " + (dir / "s.off").string() +
-                                   " --stats /dev/full");
-  EXPECT_EQ(s.code, 4) << s.err;
+  const auto s = testing::run_cli("-q surface " + kFas2 + " --raw -o " + (dir / "s.off").string() +
+                                  " --stats /dev/full");
+  EXPECT_EQ(s.exit_code, 4) << s.err;
   EXPECT_TRUE(fs::is_character_file("/dev/full"));
-  const auto n = test::run_molmesh("surface " + kFas2 + " --raw -o " + (dir / "t.off").string() +
-                                   " --stats /dev/null");
-  EXPECT_EQ(n.code, 0) << n.err;
+  const auto n = testing::run_cli("-q surface " + kFas2 + " --raw -o " + (dir / "t.off").string() +
+                                  " --stats /dev/null");
+  EXPECT_EQ(n.exit_code, 0) << n.err;
   EXPECT_TRUE(fs::is_character_file("/dev/null"));
   fs::remove_all(dir);
 }
@@ -99,9 +99,9 @@ TEST(OutputPaths, FileSizeLimitIsExitCode4AndLeavesNothing) {
   for (const std::string& command :
        {"surface " + kFas2 + " --raw -o " + (dir / "s.off").string(),
         "hierarchy " + k1a1p + " --t0 0.2 --domain interior -o " + (dir / "h.h5").string()}) {
-    const auto r = test::run_molmesh(command, "ulimit -f 16;");
+    const auto r = testing::run_cli_after("ulimit -f 16;", "-q " + command);
     EXPECT_EQ(r.signal, 0) << command << ": " << r.err;
-    EXPECT_EQ(r.code, 4) << command << ": " << r.err;
+    EXPECT_EQ(r.exit_code, 4) << command << ": " << r.err;
     EXPECT_EQ(entries(dir), 0u) << command;
   }
   fs::remove_all(dir);
@@ -112,26 +112,27 @@ TEST(OutputPaths, FullDiskIsExitCode4ForHierarchyAndSolve) {
   // A small tmpfs (needs root and a kernel that allows it; skipped otherwise).
   if (::mount("tmpfs", dir.c_str(), "tmpfs", 0, "size=64k") != 0)
     GTEST_SKIP() << "cannot mount a tmpfs here";
-  const auto r = test::run_molmesh("hierarchy " + k1a1p + " --t0 0.2 --domain interior -o " +
-                                   (dir / "h.h5").string());
+  const auto r = testing::run_cli("-q hierarchy " + k1a1p + " --t0 0.2 --domain interior -o " +
+                                  (dir / "h.h5").string());
   EXPECT_EQ(r.signal, 0) << r.err;
-  EXPECT_EQ(r.code, 4) << r.err;
+  EXPECT_EQ(r.exit_code, 4) << r.err;
   EXPECT_EQ(entries(dir), 0u);
   ::umount(dir.c_str());
 
   // solve: the hierarchy fits, its copy with the new fields does not.
   const auto home = scratch("solvehome");
   ASSERT_EQ(
-      test::run_molmesh("hierarchy " + k1a1p + " --t0 0.2,0.4 -o " + (home / "h.h5").string()).code,
+      testing::run_cli("-q hierarchy " + k1a1p + " --t0 0.2,0.4 -o " + (home / "h.h5").string())
+          .exit_code,
       0);
   const auto size = fs::file_size(home / "h.h5");
   const std::string options = "size=" + std::to_string(size + size / 2 + 65536);
   ASSERT_EQ(::mount("tmpfs", dir.c_str(), "tmpfs", 0, options.c_str()), 0);
   fs::copy_file(home / "h.h5", dir / "h.h5");
   const std::string before = read_all(dir / "h.h5");
-  const auto s = test::run_molmesh("solve smoluchowski " + (dir / "h.h5").string());
+  const auto s = testing::run_cli("-q solve smoluchowski " + (dir / "h.h5").string());
   EXPECT_EQ(s.signal, 0) << s.err;
-  EXPECT_EQ(s.code, 4) << s.err;
+  EXPECT_EQ(s.exit_code, 4) << s.err;
   EXPECT_EQ(read_all(dir / "h.h5"), before);
   EXPECT_EQ(entries(dir), 1u);
   ::umount(dir.c_str());

@@ -12,7 +12,7 @@
 #include "hierarchy/hierarchy_support.hpp"
 #include "molmesh/core/error.hpp"
 #include "molmesh/io/hierarchy_hdf5.hpp"
-#include "support/cli_exit.hpp"
+#include "support/cli.hpp"
 
 namespace molmesh {
 namespace {
@@ -89,9 +89,9 @@ TEST(HierarchyDamage, SolveOnANanTransferFailsBeforeWritingAnything) {
   const auto dir = scratch("solve");
   const fs::path file = damaged(dir, "nan", "f['transfer/1_to_0/volume/data'][0] = np.nan");
   const std::string before = bytes_of(file);
-  const auto r = test::run_molmesh("solve smoluchowski " + file.string() + " --json " +
-                                   (dir / "r.json").string());
-  EXPECT_EQ(r.code, 3) << r.err;
+  const auto r = testing::run_cli("-q solve smoluchowski " + file.string() + " --json " +
+                                  (dir / "r.json").string());
+  EXPECT_EQ(r.exit_code, 3) << r.err;
   EXPECT_NE(r.err.find("not finite"), std::string::npos) << r.err;
   EXPECT_EQ(bytes_of(file), before);
   EXPECT_FALSE(fs::exists(dir / "r.json"));
@@ -117,13 +117,13 @@ TEST(HierarchyDamage, CorruptBytesAreExitCode3NeverASignal) {
     const fs::path file = dir / "damaged.h5";
     std::ofstream(file, std::ios::binary) << bytes;
     for (const char* command : {"info ", "solve smoluchowski --no-fields "}) {
-      const auto r = test::run_molmesh(command + file.string());
+      const auto r = testing::run_cli(std::string("-q ") + command + file.string());
       ASSERT_EQ(r.signal, 0) << command << "offset " << offset << ": " << r.err;
       // 0: the damage hit bytes nobody reads (or still valid values); 1: the solver refused
       // the (valid but different) data; otherwise only the input-error code.
-      ASSERT_TRUE(r.code == 0 || r.code == 1 || r.code == 3)
-          << command << "offset " << offset << ": exit " << r.code << " " << r.err;
-      (r.code == 3 ? refused : accepted) += 1;
+      ASSERT_TRUE(r.exit_code == 0 || r.exit_code == 1 || r.exit_code == 3)
+          << command << "offset " << offset << ": exit " << r.exit_code << " " << r.err;
+      (r.exit_code == 3 ? refused : accepted) += 1;
     }
   }
   EXPECT_GT(refused, 0);

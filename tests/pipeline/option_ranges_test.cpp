@@ -10,7 +10,7 @@
 
 #include "molmesh/io/surface_mesh_io.hpp"
 #include "molmesh/tetmesh/outer_sphere.hpp"
-#include "support/cli_exit.hpp"
+#include "support/cli.hpp"
 
 namespace molmesh {
 namespace {
@@ -52,8 +52,8 @@ TEST(OptionRanges, NonFiniteAndAbsurdValuesAreUsageErrorsNamingTheOption) {
       {"hierarchy " + fas2 + " --t0 0.1,nan -o " + (dir / "h.h5"), "--t0"},
   };
   for (const auto& [command, option] : cases) {
-    const auto r = test::run_molmesh(command);
-    EXPECT_EQ(r.code, 2) << command << "\n" << r.err;
+    const auto r = testing::run_cli("-q " + command);
+    EXPECT_EQ(r.exit_code, 2) << command << "\n" << r.err;
     EXPECT_NE(r.err.find(option), std::string::npos) << command << "\n" << r.err;
   }
   for (const char* name : {"t.m", "s.off", "s.xyz", "t.xyz", "h.xyz", "h.h5"})
@@ -81,10 +81,10 @@ TEST(OptionRanges, OversizedGridsAndMeshesStopAtOnceWithTheMemoryTheyNeed) {
   };
   for (const auto& [command, hint] : cases) {
     const auto start = std::chrono::steady_clock::now();
-    const auto r = test::run_molmesh(command);
+    const auto r = testing::run_cli("-q " + command);
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    EXPECT_EQ(r.code, 1) << command << "\n" << r.err;
+    EXPECT_EQ(r.exit_code, 1) << command << "\n" << r.err;
     EXPECT_NE(r.err.find("would need"), std::string::npos) << command << "\n" << r.err;
     EXPECT_NE(r.err.find("--max-memory"), std::string::npos) << command << "\n" << r.err;
     EXPECT_NE(r.err.find(hint), std::string::npos) << command << "\n" << r.err;

@@ -129,10 +129,17 @@ def test_volume_round_trip_and_contouring(tmp_path, fas2_atoms):
     again = molmesh.surface(volume, raw=True)
     assert_same_mesh(again, surf)
     volume.write(tmp_path / "v.dx")
-    run_cli("surface", tmp_path / "v.dx", "-o", tmp_path / "v.ply", "--raw")
+    run_cli("surface", tmp_path / "v.dx", "-o", tmp_path / "v.ply", "--raw",
+            "--stats", tmp_path / "v.json")
     from_file = molmesh.read_volume(tmp_path / "v.dx")
     assert from_file.shape == volume.shape
-    assert_same_mesh(molmesh.surface(from_file, raw=True), molmesh.read_surface(tmp_path / "v.ply"))
+    contoured = molmesh.surface(from_file, raw=True)
+    assert_same_mesh(contoured, molmesh.read_surface(tmp_path / "v.ply"))
+    # A volume has no atom selection: neither front end records one (docs/cli.md).
+    parameters = read_json(tmp_path / "v.json")["parameters"]
+    assert contoured.report["parameters"] == parameters
+    assert not {"radii", "hetatm", "waters"} & set(parameters)
+    assert parameters["raw"] is True and parameters["isovalue"] == 1.0
     built = molmesh.Volume(np.asarray(volume.values), volume.origin, volume.spacing)
     assert_same_mesh(molmesh.surface(built, raw=True), surf)
 

@@ -134,19 +134,40 @@ def test_defaults_and_ranges_are_the_clis(tmp_path, cli_full):
         run_cli("tetmesh", out / "s.ply", "-o", tmp_path / "x.m", flag, beyond, expect=2)
 
 
-def test_help_texts_are_the_clis():
-    """Each tetmesh keyword's docstring and its CLI flag's help are one text, the library's
-    (tetmesh/tetmesh_option_specs.hpp), in `tetmesh --help` and `hierarchy --help` alike."""
+# Keywords the CLI spells otherwise, and keywords no command-line flag has.
+CLI_FLAGS = {"flips": "--no-flips"}
+PYTHON_ONLY = {"truncation", "keep_volume", "measure"}
+
+
+@pytest.mark.parametrize("function, commands, everywhere", [
+    ("tetmesh", ["tetmesh", "hierarchy"], True),
+    ("surface", ["surface", "improve"], False),
+    ("improve", ["improve", "surface"], False),
+])
+def test_help_texts_are_the_clis(function, commands, everywhere):
+    """Each keyword's docstring and its CLI flag's help are one text, the library's option
+    tables (tetmesh/tetmesh_option_specs.hpp, pipeline/surface_option_specs.hpp,
+    processing/processing_option_specs.hpp, pipeline/improve_option_specs.hpp), in every
+    command that has the flag: tetmesh's in `tetmesh --help` and `hierarchy --help` alike;
+    surface's and improve's processing options each in the command that has them (`surface`
+    has no --sweeps, `improve` no --alpha)."""
     import re
     lines = {line.strip().split(" = ")[0]: line.strip()
-             for line in molmesh.tetmesh.__doc__.splitlines() if " = " in line}
-    helps = [run_cli(command, "--help").stdout for command in ["tetmesh", "hierarchy"]]
-    for keyword in molmesh.defaults("tetmesh"):
+             for line in getattr(molmesh, function).__doc__.splitlines() if " = " in line}
+    helps = {command: run_cli(command, "--help").stdout for command in commands}
+    checked = 0
+    for keyword in molmesh.defaults(function):
+        if keyword in PYTHON_ONLY:
+            continue
         text = lines[keyword].split(": ", 1)[1]
         # Python names other options as keywords, the CLI as flags.
         text = re.sub(r"`(\w+)`", lambda m: "--" + m[1].replace("_", "-"), text)[:40]
-        flag = "--" + keyword.replace("_", "-")
-        for cli_help, command in zip(helps, ["tetmesh", "hierarchy"]):
-            if keyword == "tetgen_switches" and command == "hierarchy":
-                continue  # tetmesh only
-            assert flag in cli_help and text in cli_help, (command, keyword, text)
+        flag = CLI_FLAGS.get(keyword, "--" + keyword.replace("_", "-"))
+        having = [c for c in commands if re.search(re.escape(flag) + r"\b", helps[c])]
+        if everywhere and not (keyword == "tetgen_switches"):
+            assert having == commands, (keyword, having)
+        assert having, (function, keyword, flag)
+        for command in having:
+            assert text in helps[command], (command, keyword, text)
+            checked += 1
+    assert checked >= 10, checked

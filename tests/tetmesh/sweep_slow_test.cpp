@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "support/cli_exit.hpp"
+#include "support/cli.hpp"
 
 namespace molmesh {
 namespace {
@@ -21,10 +21,11 @@ namespace {
 namespace fs = std::filesystem;
 
 void expect_clean_end(const std::string& command) {
-  const auto r = test::run_molmesh(command);
+  const auto r = testing::run_cli("-q " + command);
   EXPECT_EQ(r.signal, 0) << command << "\n" << r.err;
-  EXPECT_TRUE(r.code == 0 || r.code == 1) << command << ": exit " << r.code << "\n" << r.err;
-  if (r.code == 1) {
+  EXPECT_TRUE(r.exit_code == 0 || r.exit_code == 1) << command << ": exit " << r.exit_code << "\n"
+                                                    << r.err;
+  if (r.exit_code == 1) {
     EXPECT_NE(r.err.find("molmesh: error:"), std::string::npos) << r.err;
   }
 }

@@ -4,12 +4,13 @@
 #include <gtest/gtest.h>
 #include <tetgen.h>
 
+#include <filesystem>
 #include <string>
 
 #include "molmesh/core/error.hpp"
 #include "molmesh/tetmesh/outer_sphere.hpp"
 #include "molmesh/tetmesh/tetrahedralize.hpp"
-#include "support/cli_exit.hpp"
+#include "support/cli.hpp"
 
 namespace molmesh {
 namespace {
@@ -156,11 +157,11 @@ TEST(TetgenInput, CliFas2AtBlobbyness2IsNoCrash) {
                    ("molmesh_tetgen_fas2_" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
   const auto r =
-      test::run_molmesh(std::string("tetmesh ") + MOLMESH_TEST_DATA_DIR +
-                        "/fas2.pqr --blobbyness -2 --domain full -o " + (dir / "f.m").string());
+      testing::run_cli("-q " + std::string("tetmesh ") + MOLMESH_TEST_DATA_DIR +
+                       "/fas2.pqr --blobbyness -2 --domain full -o " + (dir / "f.m").string());
   EXPECT_EQ(r.signal, 0) << r.err;
-  EXPECT_TRUE(r.code == 0 || r.code == 1) << r.code << " " << r.err;
-  if (r.code != 0) {
+  EXPECT_TRUE(r.exit_code == 0 || r.exit_code == 1) << r.exit_code << " " << r.err;
+  if (r.exit_code != 0) {
     EXPECT_NE(r.err.find("molmesh: error:"), std::string::npos) << r.err;
     EXPECT_FALSE(std::filesystem::exists(dir / "f.m"));
   }

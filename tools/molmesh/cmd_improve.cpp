@@ -14,13 +14,16 @@
 #include "molmesh/io/msms.hpp"
 #include "molmesh/io/stats_json.hpp"
 #include "molmesh/io/surface_mesh_io.hpp"
+#include "molmesh/pipeline/improve_option_specs.hpp"
 #include "molmesh/pipeline/improve_pipeline.hpp"
 #include "molmesh/pipeline/parameters_json.hpp"
 #include "molmesh/processing/dislocation.hpp"
 #include "molmesh/processing/mesh_repair.hpp"
 #include "molmesh/processing/process_surface.hpp"
+#include "molmesh/processing/processing_option_specs.hpp"
 #include "molmesh/surface/surface_stats.hpp"
 #include "option_checks.hpp"
+#include "spec_option.hpp"
 
 namespace molmesh::cli {
 namespace {
@@ -121,51 +124,31 @@ const CommandRegistration registration{
                       "metrics, the repairs made, the dislocation from the (repaired) input in Å "
                       "and stage timings as JSON to this file")
           ->type_name("FILE.json");
-      cmd->add_option("--t0", args->options.processing.t0,
-                      "Coarsening thresholds T0 of Eq. 6, one coarsening round each, in order "
-                      "(larger removes more vertices; features survive better with several small "
-                      "rounds)")
+      const ProcessingOptionSpecs& processing = kProcessingOptionSpecs;
+      const ImproveOptionSpecs& specs = kImproveOptionSpecs;
+      ProcessingOptions& p = args->options.processing;
+      add_spec_option(*cmd, specs.t0, p.t0)
           ->delimiter(',')
           ->capture_default_str()
           ->type_name("T0[,T0...]");
       cmd->add_flag("--no-coarsen", args->no_coarsen,
                     "Quality improvement and smoothing only: keep every vertex");
-      cmd->add_flag("--repair-only", args->options.repair_only,
-                    "Write the repaired mesh without any processing");
-      cmd->add_option("--rings", args->options.processing.rings,
-                      "Neighbourhood (k-ring) of the structure tensor that tells features from "
-                      "flat regions")
-          ->check(CLI::Range(1, 5))
-          ->capture_default_str()
-          ->type_name("K");
-      cmd->add_option("--sweeps", args->options.processing.improve.sweeps,
-                      "Passes of angle-based quality improvement over all vertices per round")
-          ->check(CLI::Range(0, 100))
+      add_spec_flag(*cmd, specs.repair_only, args->options.repair_only);
+      add_spec_option(*cmd, processing.rings, p.rings)->capture_default_str()->type_name("K");
+      add_spec_option(*cmd, processing.sweeps, p.improve.sweeps)
           ->capture_default_str()
           ->type_name("N");
-      cmd->add_option("--feature-weight", args->options.processing.improve.feature_weight,
-                      "How strongly vertices on features are held in place during improvement "
-                      "(0: not at all)")
-          ->check(finite_in(0, kLargestValue))
+      add_spec_option(*cmd, processing.feature_weight, p.improve.feature_weight)
           ->capture_default_str()
           ->type_name("W");
-      cmd->add_option("--smooth-iterations", args->options.processing.smoothing.normal_iterations,
-                      "Normal-diffusion iterations of the feature-preserving smoothing (0: no "
-                      "smoothing)")
-          ->check(CLI::Range(0, 100))
+      add_spec_option(*cmd, processing.smooth_iterations, p.smoothing.normal_iterations)
           ->capture_default_str()
           ->type_name("N");
-      cmd->add_flag("!--no-flips", args->options.processing.flips,
-                    "Do not flip edges to raise angles (vertices move only)");
-      cmd->add_option("--cleanup-rounds", args->options.processing.cleanup_rounds,
-                      "Final rounds of improvement and flips aimed at the worst triangles")
-          ->check(CLI::Range(0, 100))
+      add_spec_flag(*cmd, processing.flips, p.flips);
+      add_spec_option(*cmd, processing.cleanup_rounds, p.cleanup_rounds)
           ->capture_default_str()
           ->type_name("N");
-      cmd->add_option("--merge-tolerance", args->options.repair.merge_tolerance,
-                      "Vertices closer than this (Å) are merged during repair (0: only exact "
-                      "duplicates)")
-          ->check(finite_in(0, kLargestValue))
+      add_spec_option(*cmd, specs.merge_tolerance, args->options.repair.merge_tolerance)
           ->capture_default_str()
           ->type_name("D");
       cmd->callback([args, &ctx] { run(*args, ctx); });

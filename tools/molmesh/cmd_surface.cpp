@@ -1,6 +1,7 @@
 // `molmesh surface`: atoms -> Gaussian volume -> marching cubes -> (processed) surface mesh.
 #include <chrono>
 #include <filesystem>
+#include <optional>
 #include <string>
 
 #include "command_registry.hpp"
@@ -79,7 +80,10 @@ void run(const SurfaceArgs& args, const CliContext& ctx) {
     input["grid_dims"] = volume_input ? volume.dims : result.grid_dims;
     input["raw_surface"] = to_json(compute_surface_stats(result.raw));
     input["output"] = args.output;
-    const SurfaceSource source{args.options.atoms, args.options.pipeline};
+    // A volume input has no atom selection to record (as molmesh.surface(Volume) records).
+    const SurfaceSource source{
+        volume_input ? std::nullopt : std::optional<AtomReadOptions>(args.options.atoms),
+        args.options.pipeline};
     nlohmann::json document =
         stats_document(stats, timings, input, surface_parameters_json(source));
     document.update(surface_result_json(result));

@@ -1,6 +1,9 @@
 #include "option_spelling.hpp"
 
 #include "molmesh/core/error.hpp"
+#include "molmesh/pipeline/improve_option_specs.hpp"
+#include "molmesh/pipeline/surface_option_specs.hpp"
+#include "molmesh/processing/processing_option_specs.hpp"
 #include "molmesh/tetmesh/tetmesh_option_specs.hpp"
 
 namespace molmesh::cli {
@@ -25,8 +28,16 @@ std::string with_cli_flags(std::string_view message) {
         {"spacing", "--spacing"},
         {"t0", "--t0"},
     };
-    for (const OptionSpec* spec : kTetMeshOptionSpecs.all())
-      flags.emplace(std::string(spec->member), cli_flag(spec->name));
+    // The library's option tables; the first flag of a member wins (`t0` is --t0, not
+    // surface's --coarsen), and negated flags (--no-flips) are not a member's spelling.
+    const auto add = [&flags](const auto& specs) {
+      for (const OptionSpec* spec : specs.all())
+        if (spec->cli_names.empty()) flags.emplace(std::string(spec->member), cli_flag(spec->name));
+    };
+    add(kTetMeshOptionSpecs);
+    add(kSurfaceOptionSpecs);
+    add(kProcessingOptionSpecs);
+    add(kImproveOptionSpecs);
     return flags;
   }();
   return spell_option_names(message, kFlags);

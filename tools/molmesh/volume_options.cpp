@@ -1,35 +1,13 @@
 #include "volume_options.hpp"
 
-#include <algorithm>
 #include <string>
 #include <vector>
 
 #include "molmesh/io/sphere_list.hpp"
 #include "molmesh/tetmesh/tetmesh_option_specs.hpp"
-#include "option_checks.hpp"
-#include "option_spelling.hpp"
+#include "spec_option.hpp"
 
 namespace molmesh::cli {
-namespace {
-
-// --NAME with the library's help text and range (tetmesh_option_specs.hpp); `flags`: more
-// names after the first (",--alias"), `help_suffix`: what the option does in this command.
-template <class T>
-CLI::Option* add_spec_option(CLI::App& cmd, const OptionSpec& spec, T& value,
-                             const std::string& flags = "", const std::string& help_suffix = "") {
-  CLI::Option* option =
-      cmd.add_option(cli_flag(spec.name) + flags, value, with_cli_flags(spec.help) + help_suffix);
-  if (spec.range) {
-    // Unbounded above: the command line's bound for values without a natural one.
-    const double highest = std::min(spec.range->highest, kLargestValue);
-    option->check(spec.range->lowest_excluded ? finite_above(spec.range->lowest, highest)
-                                              : finite_in(spec.range->lowest, highest));
-  }
-  return option;
-}
-
-}  // namespace
-
 void add_volume_options(CLI::App& cmd, VolumeCliOptions& options,
                         const std::string& active_site_help) {
   const TetMeshOptionSpecs& specs = kTetMeshOptionSpecs;

@@ -23,6 +23,9 @@ struct OptionSpec {
   // backquoted (`sphere_ratio`), for each front end to spell as it does (spell_option_names).
   std::string_view help;
   std::optional<OptionRange> range;  // nullopt: not a number (a choice, a file, text)
+  // The CLI's flag names where they are not "--" + name ("!--no-flips": a flag that turns
+  // the option off; "--keep-on-surface,!--no-keep-on-surface"); empty: "--" + name.
+  std::string_view cli_names = {};
 };
 
 // "[0, 70]", "(0, 10000]", "(0, inf)": the bounds as printf's %g prints them.
