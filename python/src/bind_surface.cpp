@@ -234,7 +234,7 @@ void bind_surface(py::module_& m) {
         // The CLI's --stats parameters (one writer); the read options of atoms from a file.
         report["parameters"] =
             surface_parameters_json(atoms_input ? surface_source(input.cast<PyAtoms&>(), options)
-                                                : SurfaceSource{std::nullopt, options});
+                                                : SurfaceSource{std::nullopt, options, true});
         py::dict py_report = json_to_python(report.dump());
         py_report["volume"] = py::none();
         if (options.keep_volume && atoms) {

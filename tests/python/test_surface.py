@@ -140,6 +140,9 @@ def test_volume_round_trip_and_contouring(tmp_path, fas2_atoms):
     assert contoured.report["parameters"] == parameters
     assert not {"radii", "hetatm", "waters"} & set(parameters)
     assert parameters["raw"] is True and parameters["isovalue"] == 1.0
+    # A volume's surface is projected onto its level set only when asked (docs/processing.md),
+    # and both front ends record what was done, not the Gaussian default for atoms.
+    assert parameters["keep_on_surface"] is False
     built = molmesh.Volume(np.asarray(volume.values), volume.origin, volume.spacing)
     assert_same_mesh(molmesh.surface(built, raw=True), surf)
 

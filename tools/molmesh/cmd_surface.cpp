@@ -83,7 +83,7 @@ void run(const SurfaceArgs& args, const CliContext& ctx) {
     // A volume input has no atom selection to record (as molmesh.surface(Volume) records).
     const SurfaceSource source{
         volume_input ? std::nullopt : std::optional<AtomReadOptions>(args.options.atoms),
-        args.options.pipeline};
+        args.options.pipeline, volume_input};
     nlohmann::json document =
         stats_document(stats, timings, input, surface_parameters_json(source));
     document.update(surface_result_json(result));

@@ -7,7 +7,7 @@ nlohmann::json surface_parameters_json(const SurfaceSource& source) {
   nlohmann::json j;
   j["surface"] = surface_kind_name(s.surface);
   j["probe_radius"] = s.probe_radius;
-  j["keep_on_surface"] = keeps_on_surface(s);
+  j["keep_on_surface"] = source.volume_input ? volume_keeps_on_surface(s) : keeps_on_surface(s);
   j["spacing"] = s.blur.spacing;
   j["blobbyness"] = s.blur.blobbyness;
   j["isovalue"] = s.isovalue;

@@ -122,6 +122,10 @@ bool keeps_on_surface(const SurfacePipelineOptions& options) {
   return options.keep_on_surface.value_or(options.surface == SurfaceKind::kGaussian);
 }
 
+bool volume_keeps_on_surface(const SurfacePipelineOptions& options) {
+  return options.keep_on_surface.value_or(false);
+}
+
 double level_of(const SurfacePipelineOptions& options) {
   return options.surface == SurfaceKind::kGaussian ? options.isovalue : 0.0;
 }
@@ -213,7 +217,7 @@ SurfacePipelineResult surface_from_grid(const Grid& grid, const SurfacePipelineO
   // (maps are noisy at the voxel scale, and an unset keep_on_surface means the Gaussian's
   // default, which is for atoms).
   std::function<Vec3(const Vec3&)> projection;
-  if (options.keep_on_surface.value_or(false))
+  if (volume_keeps_on_surface(options))
     projection = level_set_projection(std::make_shared<const Grid>(grid), options.isovalue);
   extract_and_process(grid, options.isovalue, options, projection, reporter, result);
   result.projection = std::move(projection);

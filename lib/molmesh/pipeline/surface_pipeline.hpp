@@ -86,6 +86,8 @@ Grid surface_volume(const Atoms& atoms, const SurfacePipelineOptions& options,
                     const Reporter& reporter = {});
 // options.keep_on_surface, or the kind's default when it is unset.
 bool keeps_on_surface(const SurfacePipelineOptions& options);
+// The same for a volume input (surface_from_grid): only when options.keep_on_surface is true.
+bool volume_keeps_on_surface(const SurfacePipelineOptions& options);
 
 double level_of(const SurfacePipelineOptions& options);
 

@@ -12,6 +12,7 @@ namespace molmesh {
 struct SurfaceSource {
   std::optional<AtomReadOptions> atoms;  // nullopt: not read from a file (e.g. arrays, a volume)
   SurfacePipelineOptions surface;
+  bool volume_input = false;  // contoured from a volume (surface_from_grid), not from atoms
 };
 
 }  // namespace molmesh
