@@ -10,17 +10,12 @@
 #include <string>
 
 #include "io/io_test_support.hpp"
+#include "support/cli.hpp"
 
 namespace molmesh {
 namespace {
 
 namespace fs = std::filesystem;
-
-int run_cli(const std::string& args, const fs::path& log) {
-  const std::string command =
-      std::string(MOLMESH_CLI_PATH) + " -q " + args + " > " + log.string() + " 2>&1";
-  return std::system(command.c_str());
-}
 
 class ExportCli : public ::testing::Test {
  protected:
@@ -30,22 +25,22 @@ class ExportCli : public ::testing::Test {
     fs::remove_all(dir_);
     fs::create_directories(dir_);
     h5_ = dir_ / "fas2.h5";
-    status_ = run_cli("hierarchy " + (fs::path(MOLMESH_TEST_DATA_DIR) / "fas2.pqr").string() +
-                          " --t0 0.1,0.3 --domain exterior --outer-radius 60 -o " + h5_.string(),
-                      dir_ / "hierarchy.log");
+    hierarchy_ =
+        testing::run_cli("-q hierarchy " + (fs::path(MOLMESH_TEST_DATA_DIR) / "fas2.pqr").string() +
+                         " --t0 0.1,0.3 --domain exterior --outer-radius 60 -o " + h5_.string());
   }
   static inline fs::path dir_, h5_;
-  static inline int status_ = -1;
+  static inline testing::CliRun hierarchy_;
 };
 
 TEST_F(ExportCli, IndependentReadersReadEveryLevel) {
-  ASSERT_EQ(status_, 0) << test::slurp(dir_ / "hierarchy.log");
-  ASSERT_EQ(run_cli("export " + h5_.string() + " --all-levels -o " + (dir_ / "fas2").string(),
-                    dir_ / "export.log"),
-            0)
-      << test::slurp(dir_ / "export.log");
+  ASSERT_EQ(hierarchy_.exit_code, 0) << hierarchy_.err;
+  const auto run = testing::run_cli("-q export " + h5_.string() + " --all-levels -o " +
+                                    (dir_ / "fas2").string());
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_EQ(run.err, "");
   // One line per file written: 5 per level and 4 per transfer.
-  const std::string listing = test::slurp(dir_ / "export.log");
+  const std::string& listing = run.out;
   EXPECT_EQ(std::count(listing.begin(), listing.end(), '\n'), 2 * 5 + 4) << listing;
   const fs::path checker = fs::path(MOLMESH_TEST_DATA_DIR).parent_path() / "io" / "check_export.py";
   const std::string command = "/usr/bin/python3 " + checker.string() + " " + h5_.string() + " " +
@@ -55,10 +50,10 @@ TEST_F(ExportCli, IndependentReadersReadEveryLevel) {
 }
 
 TEST_F(ExportCli, OneLevelAndItsProlongation) {
-  ASSERT_EQ(status_, 0);
-  ASSERT_EQ(run_cli("export " + h5_.string() + " --level 1 -o " + (dir_ / "one").string(),
-                    dir_ / "one.log"),
-            0);
+  ASSERT_EQ(hierarchy_.exit_code, 0);
+  const auto run =
+      testing::run_cli("-q export " + h5_.string() + " --level 1 -o " + (dir_ / "one").string());
+  ASSERT_EQ(run.exit_code, 0) << run.err;
   EXPECT_TRUE(fs::exists(dir_ / "one_L1_volume.m"));
   EXPECT_FALSE(fs::exists(dir_ / "one_L0_volume.m"));
   // Level 1 is the coarsest of two: no prolongation has it as the fine level.
@@ -66,11 +61,12 @@ TEST_F(ExportCli, OneLevelAndItsProlongation) {
 }
 
 TEST_F(ExportCli, ALevelTheFileDoesNotHaveIsAnError) {
-  ASSERT_EQ(status_, 0);
-  const int status = run_cli("export " + h5_.string() + " --level 7 -o " + (dir_ / "bad").string(),
-                             dir_ / "bad.log");
-  EXPECT_NE(status, 0);
-  const std::string log = test::slurp(dir_ / "bad.log");
+  ASSERT_EQ(hierarchy_.exit_code, 0);
+  const auto run =
+      testing::run_cli("-q export " + h5_.string() + " --level 7 -o " + (dir_ / "bad").string());
+  EXPECT_NE(run.exit_code, 0);
+  EXPECT_EQ(run.signal, 0);
+  const std::string& log = run.err;
   EXPECT_NE(log.find("has 2 level(s)"), std::string::npos) << log;
   // The library's `level` is spelled as the flag the user typed.
   EXPECT_NE(log.find("--level 7:"), std::string::npos) << log;
