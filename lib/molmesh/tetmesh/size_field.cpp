@@ -17,8 +17,6 @@ constexpr double kShellRatio = 1.25;
 constexpr double kShellClearance = 1.05;
 // Icosphere level of a shell (162 points; the field is constant on it).
 constexpr int kShellSubdivisions = 2;
-// Tetrahedra of edge h per h³ of volume (a regular tetrahedron has volume h³ / 8.49).
-constexpr double kTetrahedraPerCube = 8.49;
 
 }  // namespace
 

@@ -26,6 +26,10 @@ inline constexpr double kFarFieldSizeExponent = 1.2;
 // (R = 10 Å, outer radius 100 Å) at +0.84 % and the Born ion at +0.08 % (docs/validation.md).
 inline constexpr double kFarFieldSizeRatio = 0.09;
 
+// Tetrahedra of edge h per h³ of volume (a regular tetrahedron has volume h³ / 8.49): what
+// turns sizes into tetrahedron counts (memory estimates) and a volume bound into a size.
+inline constexpr double kTetrahedraPerCube = 8.49;
+
 // R of the law: the radius of the sphere with the molecule's volume (Å³; a sphere's own
 // radius). The capacity of a compact body is close to it; the size depends on it as R^(-1/5).
 double size_field_radius(double molecule_volume);

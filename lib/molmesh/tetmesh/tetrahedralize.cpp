@@ -348,6 +348,7 @@ static TetMesh tetrahedralize_centred(const SurfaceMesh& surface, const Atoms& a
   for (const auto& p : surface.points)
     surface_reach = std::max(surface_reach, (p - extent.centroid).norm());
   const double molecule_volume = std::abs(enclosed_volume(surface.points, surface.triangles));
+  const double field_radius = size_field_radius(molecule_volume);
   SurfaceMesh sphere;
   if (want_exterior) {
     double radius = 0.0;
@@ -411,7 +412,8 @@ static TetMesh tetrahedralize_centred(const SurfaceMesh& surface, const Atoms& a
   // With max_volume, no size above the edge of a tetrahedron of that volume (h³ / 8.49):
   // TetGen rejects a refinement point that falls inside a vertex's size, which left
   // tetrahedra above the bound once surface sizes were 1.5 edges.
-  const double size_cap = options.max_volume ? std::cbrt(8.49 * *options.max_volume) : 0.0;
+  const double size_cap =
+      options.max_volume ? std::cbrt(kTetrahedraPerCube * *options.max_volume) : 0.0;
   std::vector<double> input_sizes;
   if (graded) {
     // The size rule (size_field.hpp): surface vertices from their edges, the outer sphere's
@@ -419,7 +421,7 @@ static TetMesh tetrahedralize_centred(const SurfaceMesh& surface, const Atoms& a
     input_sizes = mean_edge_lengths(surface);
     for (double& h : input_sizes) h *= kSurfaceSizeRatio;
     input_sizes.resize(static_cast<std::size_t>(n_in),
-                       far_field_size(report.outer_radius, size_field_radius(molecule_volume)));
+                       far_field_size(report.outer_radius, field_radius));
     for (double& h : input_sizes) h *= options.size_factor;
     // The molecule's volume at the surface's sizes needs about volume / (h^3 / 8.5)
     // tetrahedra of edge h (a regular tetrahedron has volume h^3 / 8.49): the interior, or
@@ -428,10 +430,10 @@ static TetMesh tetrahedralize_centred(const SurfaceMesh& surface, const Atoms& a
     double h_mean = 0.0;
     for (int i = 0; i < n_surface; ++i) h_mean += input_sizes[static_cast<std::size_t>(i)];
     h_mean /= n_surface;
-    double tetrahedra = molecule_volume * 8.49 / (h_mean * h_mean * h_mean);
+    double tetrahedra = molecule_volume * kTetrahedraPerCube / (h_mean * h_mean * h_mean);
     if (want_exterior)
-      tetrahedra += far_field_tetrahedra(surface_reach, size_field_radius(molecule_volume),
-                                         report.outer_radius, options.size_factor);
+      tetrahedra += far_field_tetrahedra(surface_reach, field_radius, report.outer_radius,
+                                         options.size_factor);
     check_memory(tetrahedra * kBytesPerTetrahedron, options.max_memory_bytes,
                  "the tetrahedral mesh (about " + format_number(tetrahedra) +
                      " tetrahedra at `size_factor` " + format_number(options.size_factor) + ")",
@@ -494,9 +496,8 @@ static TetMesh tetrahedralize_centred(const SurfaceMesh& surface, const Atoms& a
   if (graded && want_exterior) {
     // The solvent's sizes: a background mesh through the surface, the outer sphere and the
     // far-field shells, all with their sizes.
-    const SizePoints shells =
-        far_field_size_points(extent.centroid, surface_reach, size_field_radius(molecule_volume),
-                              report.outer_radius, options.size_factor);
+    const SizePoints shells = far_field_size_points(extent.centroid, surface_reach, field_radius,
+                                                    report.outer_radius, options.size_factor);
     std::vector<Vec3> points = surface.points;
     points.insert(points.end(), sphere.points.begin(), sphere.points.end());
     points.insert(points.end(), shells.points.begin(), shells.points.end());
