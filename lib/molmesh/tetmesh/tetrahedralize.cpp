@@ -277,6 +277,46 @@ void background_mesh(const std::vector<Vec3>& points, const std::vector<double>&
   std::copy(sizes.begin(), sizes.end(), bg.pointmtrlist);
 }
 
+// TetGen's switches: ours from the quality bounds, or the caller's with the ones molmesh
+// needs added.
+std::string tetgen_switches(const TetMeshOptions& options, bool graded) {
+  // p: PLC; Y: no Steiner points on the given facets; M: keep coplanar neighbours as
+  // separate facets (merging them would let TetGen re-triangulate the surface); z: 0-based;
+  // n: neighbours (to split regions); Q: quiet.
+  std::string switches;
+  if (options.tetgen_switches.empty()) {
+    if (!(options.max_radius_edge_ratio > 0.0) || options.min_dihedral_deg < 0.0)
+      throw Error("tetgen quality bounds must be positive");
+    switches = "pYM";
+    switches += "q" + format_number(options.max_radius_edge_ratio) + "/" +
+                format_number(options.min_dihedral_deg);
+    if (options.max_volume) {
+      if (!(*options.max_volume > 0.0)) throw Error("maximum tetrahedron volume must be positive");
+      switches += "a" + format_number(*options.max_volume);
+    }
+    if (graded) switches += "m";
+  } else {
+    switches = options.tetgen_switches;
+    if (switches.find_first_of("rRwmk") != std::string::npos)
+      throw Error("`tetgen_switches`: r, R, w, m and k are not supported (molmesh meshes a PLC)");
+    if (switches.find('p') == std::string::npos) switches.insert(0, "p");
+  }
+  for (char c : std::string("znQ"))
+    if (switches.find(c) == std::string::npos) switches += c;
+  return switches;
+}
+
+// Vertex markers: the highest-ranked marker of the faces around (markers.hpp).
+void assign_vertex_markers(TetMesh& mesh) {
+  mesh.vertex_markers.assign(mesh.points.size(), markers::kNoMarker);
+  for (std::size_t f = 0; f < mesh.boundary_faces.size(); ++f) {
+    const int m = mesh.boundary_face_markers[f];
+    for (int v : mesh.boundary_faces[f])
+      if (markers::vertex_marker_rank(m) > markers::vertex_marker_rank(mesh.vertex_markers[v]))
+        mesh.vertex_markers[v] = m;
+  }
+}
+
 }  // namespace
 
 std::string domain_name(Domain domain) {
@@ -518,29 +558,7 @@ static TetMesh tetrahedralize_centred(const SurfaceMesh& surface, const Atoms& a
     if (!shells.points.empty()) background_mesh(points, sizes, background);
   }
 
-  // p: PLC; Y: no Steiner points on the given facets; M: keep coplanar neighbours as
-  // separate facets (merging them would let TetGen re-triangulate the surface); z: 0-based;
-  // n: neighbours (to split regions); Q: quiet.
-  std::string switches;
-  if (options.tetgen_switches.empty()) {
-    if (!(options.max_radius_edge_ratio > 0.0) || options.min_dihedral_deg < 0.0)
-      throw Error("tetgen quality bounds must be positive");
-    switches = "pYM";
-    switches += "q" + format_number(options.max_radius_edge_ratio) + "/" +
-                format_number(options.min_dihedral_deg);
-    if (options.max_volume) {
-      if (!(*options.max_volume > 0.0)) throw Error("maximum tetrahedron volume must be positive");
-      switches += "a" + format_number(*options.max_volume);
-    }
-    if (graded) switches += "m";
-  } else {
-    switches = options.tetgen_switches;
-    if (switches.find_first_of("rRwmk") != std::string::npos)
-      throw Error("`tetgen_switches`: r, R, w, m and k are not supported (molmesh meshes a PLC)");
-    if (switches.find('p') == std::string::npos) switches.insert(0, "p");
-  }
-  for (char c : std::string("znQ"))
-    if (switches.find(c) == std::string::npos) switches += c;
+  const std::string switches = tetgen_switches(options, graded);
   report.tetgen_switches = switches;
 
   if (options.max_volume && options.tetgen_switches.empty()) {
@@ -687,14 +705,7 @@ static TetMesh tetrahedralize_centred(const SurfaceMesh& surface, const Atoms& a
     }
   }
 
-  // Vertex markers: the highest-ranked marker of the faces around (markers.hpp).
-  mesh.vertex_markers.assign(mesh.points.size(), markers::kNoMarker);
-  for (std::size_t f = 0; f < mesh.boundary_faces.size(); ++f) {
-    const int m = mesh.boundary_face_markers[f];
-    for (int v : mesh.boundary_faces[f])
-      if (markers::vertex_marker_rank(m) > markers::vertex_marker_rank(mesh.vertex_markers[v]))
-        mesh.vertex_markers[v] = m;
-  }
+  assign_vertex_markers(mesh);
 
   // Vertices on the molecular surface that were not given: Steiner points (0 with Y).
   for (int i = n_in; i < n_out_points; ++i) {
