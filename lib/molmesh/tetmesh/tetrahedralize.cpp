@@ -306,6 +306,60 @@ std::string tetgen_switches(const TetMeshOptions& options, bool graded) {
   return switches;
 }
 
+using FacetMarkers = std::unordered_map<FaceKey, int, FaceKeyHash>;
+
+Vec3 tetgen_point(const tetgenio& out, int i) {
+  return Vec3(out.pointlist[3 * i], out.pointlist[3 * i + 1], out.pointlist[3 * i + 2]);
+}
+
+// The face opposite corner k, ordered so the normal points out of the tet.
+Triangle face_opposite(const Tetrahedron& t, int k) {
+  return Triangle{t[kTetFaces[k][0]], t[kTetFaces[k][1]], t[kTetFaces[k][2]]};
+}
+
+// Regions: tets connected across faces that are not on an input facet. Each is classified
+// by the winding number of the molecular surface at one tet's centroid, so cavities
+// (inside the surface but outside the molecule) come out as solvent.
+struct Regions {
+  std::vector<int> component;         // per tet
+  std::vector<int> component_region;  // per component: markers::kMoleculeRegion or kSolventRegion
+};
+Regions classify_regions(const std::vector<Tetrahedron>& tets,
+                         const std::vector<std::array<int, 4>>& nbr,
+                         const FacetMarkers& facet_marker, const tetgenio& out,
+                         const SurfaceMesh& surface) {
+  const int n_tets = static_cast<int>(tets.size());
+  auto point_at = [&](int i) { return tetgen_point(out, i); };
+  std::vector<int> component(static_cast<std::size_t>(n_tets), -1);
+  std::vector<int> component_region;
+  std::vector<int> stack;
+  for (int seed = 0; seed < n_tets; ++seed) {
+    if (component[seed] >= 0) continue;
+    const int id = static_cast<int>(component_region.size());
+    component[seed] = id;
+    stack.assign(1, seed);
+    while (!stack.empty()) {
+      const int t = stack.back();
+      stack.pop_back();
+      for (int k = 0; k < 4; ++k) {
+        const int n = nbr[t][k];
+        if (n < 0 || component[n] >= 0) continue;
+        const Triangle f = face_opposite(tets[t], k);
+        if (facet_marker.count(face_key(f[0], f[1], f[2]))) continue;
+        component[n] = id;
+        stack.push_back(n);
+      }
+    }
+    const Tetrahedron& st = tets[seed];
+    const Vec3 centroid =
+        (point_at(st[0]) + point_at(st[1]) + point_at(st[2]) + point_at(st[3])) / 4.0;
+    component_region.push_back(winding_number(surface.points, surface.triangles, centroid) > 0.5
+                                   ? markers::kMoleculeRegion
+                                   : markers::kSolventRegion);
+  }
+  return {std::move(component), std::move(component_region)};
+}
+
 // Vertex markers: the highest-ranked marker of the faces around (markers.hpp).
 void assign_vertex_markers(TetMesh& mesh) {
   mesh.vertex_markers.assign(mesh.points.size(), markers::kNoMarker);
@@ -595,7 +649,7 @@ static TetMesh tetrahedralize_centred(const SurfaceMesh& surface, const Atoms& a
     throw Error("TetGen produced no tetrahedra");
 
   // Faces TetGen kept on the input facets, with their markers: they separate regions.
-  std::unordered_map<FaceKey, int, FaceKeyHash> facet_marker;
+  FacetMarkers facet_marker;
   facet_marker.reserve(static_cast<std::size_t>(out.numberoftrifaces) * 2);
   for (int f = 0; f < out.numberoftrifaces; ++f) {
     const int* v = out.trifacelist + 3 * f;
@@ -606,9 +660,7 @@ static TetMesh tetrahedralize_centred(const SurfaceMesh& surface, const Atoms& a
   // Tets as given by TetGen, reoriented positively; neighbour k stays opposite corner k.
   std::vector<Tetrahedron> tets(static_cast<std::size_t>(n_tets));
   std::vector<std::array<int, 4>> nbr(static_cast<std::size_t>(n_tets));
-  auto point_at = [&](int i) {
-    return Vec3(out.pointlist[3 * i], out.pointlist[3 * i + 1], out.pointlist[3 * i + 2]);
-  };
+  auto point_at = [&](int i) { return tetgen_point(out, i); };
   for (int t = 0; t < n_tets; ++t) {
     Tetrahedron tet{out.tetrahedronlist[4 * t], out.tetrahedronlist[4 * t + 1],
                     out.tetrahedronlist[4 * t + 2], out.tetrahedronlist[4 * t + 3]};
@@ -621,41 +673,10 @@ static TetMesh tetrahedralize_centred(const SurfaceMesh& surface, const Atoms& a
     tets[t] = tet;
     nbr[t] = nb;
   }
-  auto face_of = [&](const Tetrahedron& t, int k) {
-    // Opposite corner k, ordered so the normal points out of the tet.
-    return Triangle{t[kTetFaces[k][0]], t[kTetFaces[k][1]], t[kTetFaces[k][2]]};
-  };
 
-  // Regions: tets connected across faces that are not on an input facet. Each is classified
-  // by the winding number of the molecular surface at one tet's centroid, so cavities
-  // (inside the surface but outside the molecule) come out as solvent.
-  std::vector<int> component(static_cast<std::size_t>(n_tets), -1);
-  std::vector<int> component_region;
-  std::vector<int> stack;
-  for (int seed = 0; seed < n_tets; ++seed) {
-    if (component[seed] >= 0) continue;
-    const int id = static_cast<int>(component_region.size());
-    component[seed] = id;
-    stack.assign(1, seed);
-    while (!stack.empty()) {
-      const int t = stack.back();
-      stack.pop_back();
-      for (int k = 0; k < 4; ++k) {
-        const int n = nbr[t][k];
-        if (n < 0 || component[n] >= 0) continue;
-        const Triangle f = face_of(tets[t], k);
-        if (facet_marker.count(face_key(f[0], f[1], f[2]))) continue;
-        component[n] = id;
-        stack.push_back(n);
-      }
-    }
-    const Tetrahedron& st = tets[seed];
-    const Vec3 centroid =
-        (point_at(st[0]) + point_at(st[1]) + point_at(st[2]) + point_at(st[3])) / 4.0;
-    component_region.push_back(winding_number(surface.points, surface.triangles, centroid) > 0.5
-                                   ? markers::kMoleculeRegion
-                                   : markers::kSolventRegion);
-  }
+  const Regions regions = classify_regions(tets, nbr, facet_marker, out, surface);
+  const std::vector<int>& component = regions.component;
+  const std::vector<int>& component_region = regions.component_region;
 
   auto keep_region = [&](int region) {
     return region == markers::kMoleculeRegion ? want_interior : want_exterior;
@@ -697,7 +718,7 @@ static TetMesh tetrahedralize_centred(const SurfaceMesh& surface, const Atoms& a
       const bool interface = !boundary && region == markers::kMoleculeRegion &&
                              component_region[component[n]] != region;
       if (!boundary && !interface) continue;
-      const Triangle f = face_of(tets[t], k);
+      const Triangle f = face_opposite(tets[t], k);
       const auto it = facet_marker.find(face_key(f[0], f[1], f[2]));
       mesh.boundary_faces.push_back({new_point[f[0]], new_point[f[1]], new_point[f[2]]});
       mesh.boundary_face_markers.push_back(it == facet_marker.end() ? markers::kNoMarker
