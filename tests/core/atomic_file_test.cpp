@@ -1,41 +1,28 @@
 #include "molmesh/core/atomic_file.hpp"
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
 #include <sstream>
-#include <unistd.h>
 
 #include "molmesh/core/error.hpp"
+#include "support/files.hpp"
 
 namespace fs = std::filesystem;
 
 namespace {
 
-std::string read_all(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-fs::path fresh_dir(const std::string& name) {
-  auto dir = fs::temp_directory_path() / ("molmesh_" + name + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
-
 TEST(AtomicFile, WritesCompleteFile) {
-  auto dir = fresh_dir("atomic_ok");
+  auto dir = molmesh::testing::test_dir("atomic_ok");
   molmesh::write_file_atomically(dir / "out.txt", [](std::ostream& o) { o << "hello\n"; });
-  EXPECT_EQ(read_all(dir / "out.txt"), "hello\n");
+  EXPECT_EQ(molmesh::testing::slurp(dir / "out.txt"), "hello\n");
   EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator{}), 1);
 }
 
 TEST(AtomicFile, FailureLeavesPreviousContentAndNoTemporary) {
-  auto dir = fresh_dir("atomic_fail");
+  auto dir = molmesh::testing::test_dir("atomic_fail");
   std::ofstream(dir / "out.txt") << "old\n";
   EXPECT_THROW(molmesh::write_file_atomically(dir / "out.txt",
                                               [](std::ostream& o) {
@@ -43,7 +30,7 @@ TEST(AtomicFile, FailureLeavesPreviousContentAndNoTemporary) {
                                                 throw molmesh::Error("boom");
                                               }),
                molmesh::Error);
-  EXPECT_EQ(read_all(dir / "out.txt"), "old\n");
+  EXPECT_EQ(molmesh::testing::slurp(dir / "out.txt"), "old\n");
   EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator{}), 1);
 }
 

@@ -20,26 +20,12 @@
 #include "molmesh/core/atomic_file.hpp"
 #include "molmesh/core/error.hpp"
 #include "support/cli.hpp"
+#include "support/files.hpp"
 
 namespace molmesh {
 namespace {
 
 namespace fs = std::filesystem;
-
-fs::path scratch(const std::string& name) {
-  const auto dir =
-      fs::temp_directory_path() / ("molmesh_output_paths_" + name + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
-
-std::string read_all(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 std::size_t entries(const fs::path& dir) {
   return static_cast<std::size_t>(std::distance(fs::directory_iterator(dir), {}));
@@ -49,25 +35,25 @@ const std::string kFas2 = std::string(MOLMESH_TEST_DATA_DIR) + "/fas2.pqr";
 const std::string k1a1p = std::string(MOLMESH_TEST_DATA_DIR) + "/1a1p.pqr";
 
 TEST(OutputPaths, SymlinkIsFollowedNotReplaced) {
-  const auto dir = scratch("link");
+  const auto dir = testing::test_dir("link");
   std::ofstream(dir / "target.txt") << "old\n";
   fs::create_symlink("target.txt", dir / "link.txt");
   write_file_atomically(dir / "link.txt", [](std::ostream& o) { o << "new\n"; });
   EXPECT_TRUE(fs::is_symlink(fs::symlink_status(dir / "link.txt")));
-  EXPECT_EQ(read_all(dir / "target.txt"), "new\n");
+  EXPECT_EQ(testing::slurp(dir / "target.txt"), "new\n");
   // A dangling link creates its target.
   fs::create_symlink("made.txt", dir / "dangling.txt");
   write_file_atomically(dir / "dangling.txt", [](std::ostream& o) { o << "x"; });
   EXPECT_TRUE(fs::is_symlink(fs::symlink_status(dir / "dangling.txt")));
-  EXPECT_EQ(read_all(dir / "made.txt"), "x");
+  EXPECT_EQ(testing::slurp(dir / "made.txt"), "x");
   fs::remove_all(dir);
 }
 
 TEST(OutputPaths, FifoIsWrittenInPlace) {
-  const auto dir = scratch("fifo");
+  const auto dir = testing::test_dir("fifo");
   const fs::path fifo = dir / "pipe.json";
   ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
-  auto reader = std::async(std::launch::async, [&] { return read_all(fifo); });
+  auto reader = std::async(std::launch::async, [&] { return testing::slurp(fifo); });
   write_file_atomically(fifo, [](std::ostream& o) { o << "through the pipe\n"; });
   EXPECT_EQ(reader.get(), "through the pipe\n");
   EXPECT_TRUE(fs::is_fifo(fs::symlink_status(fifo)));
@@ -81,7 +67,7 @@ TEST(OutputPaths, FifoIsWrittenInPlace) {
 
 TEST(OutputPaths, DevFullIsExitCode4) {
   // The mesh formats are chosen by extension, so the device is given as the --stats file.
-  const auto dir = scratch("devfull");
+  const auto dir = testing::test_dir("devfull");
   const auto s = testing::run_cli("-q surface " + kFas2 + " --raw -o " + (dir / "s.off").string() +
                                   " --stats /dev/full");
   EXPECT_EQ(s.exit_code, 4) << s.err;
@@ -95,7 +81,7 @@ TEST(OutputPaths, DevFullIsExitCode4) {
 
 TEST(OutputPaths, FileSizeLimitIsExitCode4AndLeavesNothing) {
   // ulimit -f: writes beyond 64 blocks fail (SIGXFSZ is ignored by the CLI).
-  const auto dir = scratch("fsize");
+  const auto dir = testing::test_dir("fsize");
   for (const std::string& command :
        {"surface " + kFas2 + " --raw -o " + (dir / "s.off").string(),
         "hierarchy " + k1a1p + " --t0 0.2 --domain interior -o " + (dir / "h.h5").string()}) {
@@ -108,7 +94,7 @@ TEST(OutputPaths, FileSizeLimitIsExitCode4AndLeavesNothing) {
 }
 
 TEST(OutputPaths, FullDiskIsExitCode4ForHierarchyAndSolve) {
-  const auto dir = scratch("tmpfs");
+  const auto dir = testing::test_dir("tmpfs");
   // A small tmpfs (needs root and a kernel that allows it; skipped otherwise).
   if (::mount("tmpfs", dir.c_str(), "tmpfs", 0, "size=64k") != 0)
     GTEST_SKIP() << "cannot mount a tmpfs here";
@@ -120,7 +106,7 @@ TEST(OutputPaths, FullDiskIsExitCode4ForHierarchyAndSolve) {
   ::umount(dir.c_str());
 
   // solve: the hierarchy fits, its copy with the new fields does not.
-  const auto home = scratch("solvehome");
+  const auto home = testing::test_dir("solvehome");
   ASSERT_EQ(
       testing::run_cli("-q hierarchy " + k1a1p + " --t0 0.2,0.4 -o " + (home / "h.h5").string())
           .exit_code,
@@ -129,11 +115,11 @@ TEST(OutputPaths, FullDiskIsExitCode4ForHierarchyAndSolve) {
   const std::string options = "size=" + std::to_string(size + size / 2 + 65536);
   ASSERT_EQ(::mount("tmpfs", dir.c_str(), "tmpfs", 0, options.c_str()), 0);
   fs::copy_file(home / "h.h5", dir / "h.h5");
-  const std::string before = read_all(dir / "h.h5");
+  const std::string before = testing::slurp(dir / "h.h5");
   const auto s = testing::run_cli("-q solve smoluchowski " + (dir / "h.h5").string());
   EXPECT_EQ(s.signal, 0) << s.err;
   EXPECT_EQ(s.exit_code, 4) << s.err;
-  EXPECT_EQ(read_all(dir / "h.h5"), before);
+  EXPECT_EQ(testing::slurp(dir / "h.h5"), before);
   EXPECT_EQ(entries(dir), 1u);
   ::umount(dir.c_str());
   fs::remove_all(dir);
@@ -144,7 +130,7 @@ TEST(OutputPaths, InterruptDeletesTheTemporaryBeingWritten) {
   // A child writes an output whose writer stalls half-way; SIGINT / SIGTERM arrive while the
   // temporary exists. The child must die by that signal and leave no file behind.
   for (int signal_number : {SIGINT, SIGTERM}) {
-    const auto dir = scratch("signal");
+    const auto dir = testing::test_dir("signal" + std::to_string(signal_number));
     const pid_t child = ::fork();
     if (child == 0) {
       install_interrupt_cleanup();
@@ -175,7 +161,7 @@ TEST(OutputPaths, InterruptDuringHierarchyLeavesNothing) {
   // The real CLI on mAChE (long enough that it is still working after a second on an idle
   // machine; fas2 can finish first), interrupted while it works: it ends by the signal
   // (status 130 in a shell) and leaves no file.
-  const auto dir = scratch("cli_signal");
+  const auto dir = testing::test_dir("cli_signal");
   const std::string out = (dir / "h.h5").string();
   const std::string mache = std::string(MOLMESH_TEST_DATA_DIR) + "/mache.pqr";
   const pid_t child = ::fork();

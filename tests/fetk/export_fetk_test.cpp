@@ -1,43 +1,37 @@
 // `molmesh export` on a real hierarchy: FETK's own MC reader reads every exported level
 // with the HDF5 level's counts, positive orientation, materials and face types.
 #include <gtest/gtest.h>
-#include <unistd.h>
 
-#include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <string>
 
 #include "fetk/fetk_reader.hpp"
 #include "molmesh/io/hierarchy_hdf5.hpp"
 #include "molmesh/tetmesh/markers.hpp"
+#include "support/cli.hpp"
+#include "support/files.hpp"
 
 namespace molmesh {
 namespace {
 
 namespace fs = std::filesystem;
 
-int run(const std::string& args) {
-  return std::system((std::string(MOLMESH_CLI_PATH) + " -q " + args).c_str());
+// `molmesh -q ARGS`, expected to succeed.
+void run(const std::string& args) {
+  const testing::CliRun r = testing::run_cli("-q " + args);
+  ASSERT_EQ(r.exit_code, 0) << args << "\n" << r.output();
 }
 
 TEST(FetkReader, ReadsEveryExportedLevel) {
-  const fs::path dir =
-      fs::temp_directory_path() / ("molmesh_fetk_export_" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  {
-    std::ofstream pqr(dir / "ion.pqr");
-    pqr << "ATOM      1  I   ION     1       0.000   0.000   0.000  1.00  3.00\n";
-  }
+  const fs::path dir = testing::test_dir();
+  testing::write_file(dir / "ion.pqr",
+                      "ATOM      1  I   ION     1       0.000   0.000   0.000  1.00  3.00\n");
   const fs::path h5 = dir / "ion.h5";
-  ASSERT_EQ(run("hierarchy " + (dir / "ion.pqr").string() + " -o " + h5.string() +
-                " --domain full --outer-radius 20"),
-            0);
-  ASSERT_EQ(run("export " + h5.string() + " --all-levels -o " + (dir / "ion").string() + " > " +
-                (dir / "files.txt").string()),
-            0);
+  ASSERT_NO_FATAL_FAILURE(run("hierarchy " + (dir / "ion.pqr").string() + " -o " + h5.string() +
+                              " --domain full --outer-radius 20"));
+  ASSERT_NO_FATAL_FAILURE(
+      run("export " + h5.string() + " --all-levels -o " + (dir / "ion").string()));
   const Hierarchy h = read_hierarchy(h5);
   ASSERT_GE(h.levels.size(), 2u);
   for (std::size_t l = 0; l < h.levels.size(); ++l) {

@@ -3,29 +3,20 @@
 // and `solve` (never a signal), and `solve` on a refused file writes nothing.
 #include <gtest/gtest.h>
 
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <iterator>
 #include <string>
 
 #include "hierarchy/hierarchy_support.hpp"
 #include "molmesh/core/error.hpp"
 #include "molmesh/io/hierarchy_hdf5.hpp"
 #include "support/cli.hpp"
+#include "support/files.hpp"
 
 namespace molmesh {
 namespace {
 
 namespace fs = std::filesystem;
-
-fs::path scratch(const std::string& name) {
-  const auto dir =
-      fs::temp_directory_path() / ("molmesh_hierarchy_damage_" + name + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
 
 Hierarchy small_hierarchy() {
   Hierarchy h = testing::cube_hierarchy(4, 2);
@@ -34,18 +25,11 @@ Hierarchy small_hierarchy() {
   return h;
 }
 
-std::string bytes_of(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), {});
-}
-
 // Applies a python h5py edit to a fresh copy of the small hierarchy; returns its path.
 fs::path damaged(const fs::path& dir, const std::string& name, const std::string& edit) {
   const fs::path file = dir / (name + ".h5");
   write_hierarchy(file, small_hierarchy());
-  const std::string command = "/usr/bin/python3 -c \"import h5py, numpy as np; f = h5py.File('" +
-                              file.string() + "', 'r+'); " + edit + "; f.close()\"";
-  EXPECT_EQ(std::system(command.c_str()), 0) << edit;
+  testing::edit_with_h5py(file, edit);
   return file;
 }
 
@@ -59,7 +43,7 @@ std::string read_error(const fs::path& file) {
 }
 
 TEST(HierarchyDamage, DamagedContentsAreRefusedOnRead) {
-  const auto dir = scratch("contents");
+  const auto dir = testing::test_dir("contents");
   ASSERT_EQ(read_error(damaged(dir, "intact", "pass")), "");
   const std::pair<const char*, const char*> cases[] = {
       {"levels/0/volume/cell_markers", "f['levels/0/volume/cell_markers'][0] = 2147483647"},
@@ -86,14 +70,14 @@ TEST(HierarchyDamage, DamagedContentsAreRefusedOnRead) {
 }
 
 TEST(HierarchyDamage, SolveOnANanTransferFailsBeforeWritingAnything) {
-  const auto dir = scratch("solve");
+  const auto dir = testing::test_dir("solve");
   const fs::path file = damaged(dir, "nan", "f['transfer/1_to_0/volume/data'][0] = np.nan");
-  const std::string before = bytes_of(file);
+  const std::string before = testing::slurp(file);
   const auto r = testing::run_cli("-q solve smoluchowski " + file.string() + " --json " +
                                   (dir / "r.json").string());
   EXPECT_EQ(r.exit_code, 3) << r.err;
   EXPECT_NE(r.err.find("not finite"), std::string::npos) << r.err;
-  EXPECT_EQ(bytes_of(file), before);
+  EXPECT_EQ(testing::slurp(file), before);
   EXPECT_FALSE(fs::exists(dir / "r.json"));
   fs::remove_all(dir);
 }
@@ -104,10 +88,10 @@ TEST(HierarchyDamage, CorruptBytesAreExitCode3NeverASignal) {
   // and 1330 (the root object header's attributes) and looped forever at 3040 (refused
   // after the reader's 60 s limit: too slow for this test). Every 16th offset of bytes
   // 1000-1400 is tried here with both commands that read hierarchies.
-  const auto dir = scratch("bytes");
+  const auto dir = testing::test_dir("bytes");
   const fs::path intact = dir / "intact.h5";
   write_hierarchy(intact, small_hierarchy());
-  const std::string original = bytes_of(intact);
+  const std::string original = testing::slurp(intact);
   const std::size_t end = std::min<std::size_t>(original.size() - 4, 1400);
   int refused = 0, accepted = 0;
   for (std::size_t offset = 1000; offset < end; offset += 16) {
@@ -115,7 +99,7 @@ TEST(HierarchyDamage, CorruptBytesAreExitCode3NeverASignal) {
     bytes.replace(offset, 4, std::string("\x07\x00\x00\x00", 4));
     if (bytes == original) continue;
     const fs::path file = dir / "damaged.h5";
-    std::ofstream(file, std::ios::binary) << bytes;
+    testing::write_file(file, bytes);
     for (const char* command : {"info ", "solve smoluchowski --no-fields "}) {
       const auto r = testing::run_cli(std::string("-q ") + command + file.string());
       ASSERT_EQ(r.signal, 0) << command << "offset " << offset << ": " << r.err;

@@ -4,28 +4,20 @@
 
 #include <gtest/gtest.h>
 
-#include <cstdlib>
 #include <filesystem>
-#include <fstream>
 
 #include "hierarchy/hierarchy_support.hpp"
 #include "molmesh/core/error.hpp"
 #include "molmesh/hierarchy/renumber.hpp"
 #include "molmesh/hierarchy/transfer.hpp"
 #include "molmesh/io/sha256.hpp"
+#include "support/files.hpp"
 #include "support/structured_meshes.hpp"
 
 namespace molmesh {
 namespace {
 
 namespace fs = std::filesystem;
-
-fs::path scratch(const std::string& name) {
-  const auto dir = fs::temp_directory_path() / ("molmesh_hierarchy_hdf5_" + name);
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
 
 const fs::path kChecker = fs::path(__FILE__).parent_path() / "check_hierarchy.py";
 
@@ -48,15 +40,15 @@ TEST(Sha256, KnownDigests) {
   const std::string abc = "abc";
   EXPECT_EQ(sha256_bytes({reinterpret_cast<const unsigned char*>(abc.data()), abc.size()}),
             "ba7816bf8f01cfea414140de5dae2223b00361a396177a9cb410ff61f20015ad");
-  const auto dir = scratch("sha");
-  std::ofstream(dir / "abc.txt", std::ios::binary) << abc;
+  const auto dir = testing::test_dir("sha");
+  testing::write_file(dir / "abc.txt", abc);
   EXPECT_EQ(sha256_file(dir / "abc.txt"),
             sha256_bytes({reinterpret_cast<const unsigned char*>(abc.data()), 3}));
   EXPECT_THROW(sha256_file(dir / "missing.txt"), InputError);
 }
 
 TEST(HierarchyHdf5, RoundTripIsExact) {
-  const auto dir = scratch("roundtrip");
+  const auto dir = testing::test_dir("roundtrip");
   const auto h = synthetic_hierarchy();
   write_hierarchy(dir / "h.h5", h);
   const auto back = read_hierarchy(dir / "h.h5");
@@ -90,7 +82,7 @@ TEST(HierarchyHdf5, RoundTripIsExact) {
 }
 
 TEST(HierarchyHdf5, PointFieldsAreStoredAndShownInXdmf) {
-  const auto dir = scratch("fields");
+  const auto dir = testing::test_dir("fields");
   const auto h = synthetic_hierarchy();
   write_hierarchy(dir / "h.h5", h);
   std::vector<double> values(h.levels[1].volume.points.size());
@@ -101,8 +93,7 @@ TEST(HierarchyHdf5, PointFieldsAreStoredAndShownInXdmf) {
   EXPECT_EQ(read_point_field(dir / "h.h5", 1, "potential"), values);
   EXPECT_EQ(point_field_names(dir / "h.h5", 1), std::vector<std::string>{"potential"});
   EXPECT_TRUE(point_field_names(dir / "h.h5", 0).empty());
-  std::ifstream xdmf(dir / "h_L1_volume.xdmf");
-  const std::string text((std::istreambuf_iterator<char>(xdmf)), {});
+  const std::string text = testing::slurp(dir / "h_L1_volume.xdmf");
   EXPECT_NE(text.find("/levels/1/volume/fields/potential"), std::string::npos);
   EXPECT_THROW(write_point_field(dir / "h.h5", 1, "potential", std::vector<double>(3)), Error);
   EXPECT_THROW(write_point_field(dir / "h.h5", 5, "potential", values), InputError);
@@ -110,24 +101,20 @@ TEST(HierarchyHdf5, PointFieldsAreStoredAndShownInXdmf) {
   // The file is still complete after the failed writes.
   EXPECT_EQ(read_hierarchy(dir / "h.h5").levels.size(), 2u);
 
-  const auto command = "/usr/bin/python3 " + kChecker.string() + " " + (dir / "h.h5").string() +
-                       " --field 1 potential > " + (dir / "check.txt").string() + " 2>&1";
-  const int status = std::system(command.c_str());
-  std::ifstream report(dir / "check.txt");
-  const std::string output((std::istreambuf_iterator<char>(report)), {});
-  EXPECT_EQ(status, 0) << output;
-  EXPECT_NE(output.find("OK levels 2"), std::string::npos) << output;
+  const testing::CommandRun check =
+      testing::run_command("/usr/bin/python3 " + testing::shell_quoted(kChecker.string()) + " " +
+                           testing::shell_quoted((dir / "h.h5").string()) + " --field 1 potential");
+  EXPECT_EQ(check.exit_code, 0) << check.output();
+  EXPECT_NE(check.out.find("OK levels 2"), std::string::npos) << check.output();
 }
 
 TEST(HierarchyHdf5, ForeignFilesAreInputErrors) {
-  const auto dir = scratch("foreign");
-  std::ofstream(dir / "text.h5") << "not hdf5\n";
+  const auto dir = testing::test_dir("foreign");
+  testing::write_file(dir / "text.h5", "not hdf5\n");
   EXPECT_THROW(read_hierarchy(dir / "text.h5"), InputError);
   EXPECT_THROW(read_hierarchy(dir / "missing.h5"), InputError);
-  const auto make = "/usr/bin/python3 -c \"import h5py; f = h5py.File('" +
-                    (dir / "other.h5").string() +
-                    "', 'w'); f['x'] = [1, 2]; f.attrs['format'] = 'something-else'\"";
-  ASSERT_EQ(std::system(make.c_str()), 0);
+  testing::edit_with_h5py(dir / "other.h5",
+                          "f['x'] = [1, 2]; f.attrs['format'] = 'something-else'");
   try {
     read_hierarchy(dir / "other.h5");
     FAIL() << "expected InputError";
@@ -136,9 +123,7 @@ TEST(HierarchyHdf5, ForeignFilesAreInputErrors) {
   }
   // A hierarchy with a dataset removed is reported as damaged, not crashed on.
   write_hierarchy(dir / "h.h5", synthetic_hierarchy());
-  const auto damage = "/usr/bin/python3 -c \"import h5py; f = h5py.File('" +
-                      (dir / "h.h5").string() + "', 'r+'); del f['levels/1/volume/tetrahedra']\"";
-  ASSERT_EQ(std::system(damage.c_str()), 0);
+  testing::edit_with_h5py(dir / "h.h5", "del f['levels/1/volume/tetrahedra']");
   EXPECT_THROW(read_hierarchy(dir / "h.h5"), InputError);
 }
 

@@ -2,14 +2,14 @@
 // Checks shared by the real-molecule hierarchy tests (fast and slow).
 #include <gtest/gtest.h>
 
-#include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <string>
 
 #include "molmesh/hierarchy/hierarchy.hpp"
 #include "molmesh/hierarchy/renumber.hpp"
 #include "molmesh/hierarchy/transfer.hpp"
+#include "support/files.hpp"
+#include "support/process.hpp"
 #include "support/structured_meshes.hpp"
 
 namespace molmesh::testing {
@@ -122,14 +122,20 @@ inline void check_surface_transfer(const SparseMatrix& p, const HierarchyLevel& 
 // Runs the independent python reader on `h5`; returns its output, expects exit status 0.
 inline std::string run_python_checker(const std::filesystem::path& h5) {
   const auto checker = std::filesystem::path(__FILE__).parent_path() / "check_hierarchy.py";
-  const auto out = h5.parent_path() / (h5.stem().string() + "_check.txt");
-  const auto command =
-      "/usr/bin/python3 " + checker.string() + " " + h5.string() + " > " + out.string() + " 2>&1";
-  const int status = std::system(command.c_str());
-  std::ifstream in(out);
-  const std::string text((std::istreambuf_iterator<char>(in)), {});
-  EXPECT_EQ(status, 0) << text;
-  return text;
+  const CommandRun run = run_command("/usr/bin/python3 " + shell_quoted(checker.string()) + " " +
+                                     shell_quoted(h5.string()));
+  EXPECT_EQ(run.exit_code, 0) << run.output();
+  return run.output();
+}
+
+// Opens `file` with h5py (created if missing), runs the python `statements` on it as `f`
+// (numpy as `np`), closes it; expects exit status 0. Damages files the way another program
+// could.
+inline void edit_with_h5py(const std::filesystem::path& file, const std::string& statements) {
+  const CommandRun run =
+      run_command("/usr/bin/python3 -c \"import h5py, numpy as np; f = h5py.File('" +
+                  file.string() + "', 'a'); " + statements + "; f.close()\"");
+  EXPECT_EQ(run.exit_code, 0) << statements << "\n" << run.output();
 }
 
 }  // namespace molmesh::testing

@@ -4,13 +4,13 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <string>
 
 #include "io/io_test_support.hpp"
 #include "support/cli.hpp"
+#include "support/files.hpp"
 
 namespace molmesh {
 namespace {
@@ -43,10 +43,10 @@ TEST_F(ExportCli, IndependentReadersReadEveryLevel) {
   const std::string& listing = run.out;
   EXPECT_EQ(std::count(listing.begin(), listing.end(), '\n'), 2 * 5 + 4) << listing;
   const fs::path checker = fs::path(MOLMESH_TEST_DATA_DIR).parent_path() / "io" / "check_export.py";
-  const std::string command = "/usr/bin/python3 " + checker.string() + " " + h5_.string() + " " +
-                              (dir_ / "fas2").string() + " > " + (dir_ / "check.log").string() +
-                              " 2>&1";
-  EXPECT_EQ(std::system(command.c_str()), 0) << test::slurp(dir_ / "check.log");
+  const testing::CommandRun check = testing::run_command(
+      "/usr/bin/python3 " + testing::shell_quoted(checker.string()) + " " +
+      testing::shell_quoted(h5_.string()) + " " + testing::shell_quoted((dir_ / "fas2").string()));
+  EXPECT_EQ(check.exit_code, 0) << check.output();
 }
 
 TEST_F(ExportCli, OneLevelAndItsProlongation) {

@@ -4,7 +4,6 @@
 
 #include <array>
 #include <cmath>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <gemmi/ccp4.hpp>
@@ -17,6 +16,8 @@
 #include "molmesh/geometry/predicates.hpp"
 #include "molmesh/io/surface_mesh_io.hpp"
 #include "molmesh/io/volume_io.hpp"
+#include "support/files.hpp"
+#include "support/process.hpp"
 
 namespace molmesh {
 namespace {
@@ -27,14 +28,11 @@ const char* kPython = "/usr/bin/python3";
 std::string run_python(const std::string& script) {
   const auto dir = test::scratch_dir();
   const auto script_path = dir / "script.py";
-  const auto out_path = dir / "out.txt";
   std::ofstream(script_path) << script;
-  const std::string command =
-      std::string(kPython) + " " + script_path.string() + " > " + out_path.string() + " 2>&1";
-  const int status = std::system(command.c_str());
-  const std::string output = test::slurp(out_path);
-  EXPECT_EQ(status, 0) << output;
-  return output;
+  const testing::CommandRun run = testing::run_command(std::string(kPython) + " " +
+                                                       testing::shell_quoted(script_path.string()));
+  EXPECT_EQ(run.exit_code, 0) << run.output();
+  return run.output();
 }
 
 // Without markers: meshio 5.0 cannot read binary PLY faces that carry a property besides
@@ -158,8 +156,9 @@ TEST(Interop, WeReadApbsPotentialMaps) {
          "  sdie 78.54\n  chgm spl2\n  srfm mol\n  srad 1.4\n  swin 0.3\n"
          "  sdens 10.0\n  temp 298.15\n  calcenergy no\n  calcforce no\n"
          "  write pot dx pot\nend\nquit\n";
-  const std::string command = "cd " + dir.string() + " && apbs apbs.in > apbs.log 2>&1";
-  ASSERT_EQ(std::system(command.c_str()), 0) << test::slurp(dir / "apbs.log");
+  const testing::CommandRun apbs =
+      testing::run_command("cd " + testing::shell_quoted(dir.string()) + " && apbs apbs.in");
+  ASSERT_EQ(apbs.exit_code, 0) << apbs.output();
   const Grid g = read_volume(dir / "pot-PE0.dx");
   ASSERT_EQ(g.dims, (std::array<int, 3>{33, 17, 17}));
   EXPECT_EQ(g.origin, Vec3(-8, -4, -4));

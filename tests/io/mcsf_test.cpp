@@ -4,7 +4,6 @@
 
 #include <gtest/gtest.h>
 
-#include <cstdlib>
 #include <filesystem>
 #include <map>
 
@@ -15,6 +14,8 @@
 #include "molmesh/tetmesh/outer_sphere.hpp"
 #include "molmesh/tetmesh/tet_stats.hpp"
 #include "molmesh/tetmesh/tetrahedralize.hpp"
+#include "support/files.hpp"
+#include "support/process.hpp"
 
 namespace molmesh {
 namespace {
@@ -149,9 +150,10 @@ TEST(VolumeMeshIo, MeshioReadsVtuAndGmshWithRegionsAndMarkers) {
        << "    assert 'molecule' in g.field_data and 'outer_sphere' in g.field_data, g.field_data\n"
        << "print('ok')\n";
   }
-  const std::string cmd = "/usr/bin/python3 '" + script + "' '" + dir.string() + "' > '" +
-                          dir.string() + "/py.log' 2>&1";
-  EXPECT_EQ(std::system(cmd.c_str()), 0) << test::slurp(dir / "py.log");
+  const testing::CommandRun check =
+      testing::run_command("/usr/bin/python3 " + testing::shell_quoted(script) + " " +
+                           testing::shell_quoted(dir.string()));
+  EXPECT_EQ(check.exit_code, 0) << check.output();
 }
 
 }  // namespace

@@ -23,18 +23,12 @@
 #include "molmesh/processing/dislocation.hpp"
 #include "molmesh/surface/surface_stats.hpp"
 #include "support/cli.hpp"
+#include "support/files.hpp"
 
 namespace molmesh {
 namespace {
 
 namespace fs = std::filesystem;
-
-fs::path scratch() {
-  const auto dir =
-      fs::temp_directory_path() / ("molmesh_inputs_volume_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  return dir;
-}
 
 int molmesh(const std::string& args, std::string* err = nullptr) {
   const testing::CliRun run = testing::run_cli("--quiet " + args);
@@ -55,7 +49,7 @@ TEST(VolumeInput, WrittenBlurContoursLikeTheAtomsPath) {
   const SurfacePipelineResult direct = surface_from_atoms(atoms, options);
   ASSERT_EQ(direct.volume.dims, direct.grid_dims);
   for (const char* ext : {".dx", ".mrc"}) {
-    const fs::path file = scratch() / (std::string("1a1p") + ext);
+    const fs::path file = testing::test_dir() / (std::string("1a1p") + ext);
     write_volume(file, direct.volume);
     const Grid back = read_volume(file);
     EXPECT_EQ(back.dims, direct.volume.dims);
@@ -103,14 +97,14 @@ void write_sphere_mrc(const fs::path& path, int n, double h, const Vec3& origin,
 }
 
 TEST(VolumeInput, HandMadeMrcSphereThroughTheSurfaceCommand) {
-  const fs::path map = scratch() / "sphere.mrc";
+  const fs::path map = testing::test_dir() / "sphere.mrc";
   const Vec3 origin(-10.0, 5.0, 2.0);
   const Vec3 centre = origin + Vec3::Constant(8.0);
   const double radius = 6.0;
   write_sphere_mrc(map, 33, 0.5, origin, centre, radius);
-  const fs::path out = scratch() / "sphere.off";
-  const fs::path raw = scratch() / "sphere_raw.off";
-  const fs::path stats = scratch() / "sphere.json";
+  const fs::path out = testing::test_dir() / "sphere.off";
+  const fs::path raw = testing::test_dir() / "sphere_raw.off";
+  const fs::path stats = testing::test_dir() / "sphere.json";
   std::string err;
   // Raw marching cubes: where the map says the sphere is (origin, spacing, axis order).
   ASSERT_EQ(molmesh("surface " + map.string() + " --isovalue 1 --raw -o " + raw.string(), &err), 0)
@@ -138,11 +132,11 @@ TEST(VolumeInput, HandMadeMrcSphereThroughTheSurfaceCommand) {
 
 TEST(VolumeInput, SurfaceCommandWritesAndRecontoursItsVolumeAndBlursFast) {
   const std::string pqr = MOLMESH_TEST_DATA_DIR "/1a1p.pqr";
-  const fs::path vol = scratch() / "cli_1a1p.mrc";
-  const fs::path a = scratch() / "cli_atoms.off";
-  const fs::path b = scratch() / "cli_volume.off";
-  const fs::path c = scratch() / "cli_fast.off";
-  const fs::path cs = scratch() / "cli_fast.json";
+  const fs::path vol = testing::test_dir() / "cli_1a1p.mrc";
+  const fs::path a = testing::test_dir() / "cli_atoms.off";
+  const fs::path b = testing::test_dir() / "cli_volume.off";
+  const fs::path c = testing::test_dir() / "cli_fast.off";
+  const fs::path cs = testing::test_dir() / "cli_fast.json";
   std::string err;
   ASSERT_EQ(
       molmesh("surface " + pqr + " --raw -o " + a.string() + " --write-volume " + vol.string(),

@@ -4,34 +4,31 @@
 // prolongations.
 #include <gtest/gtest.h>
 #include <petscmat.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <cstdio>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <string>
 
 #include "molmesh/io/hierarchy_hdf5.hpp"
+#include "support/cli.hpp"
+#include "support/files.hpp"
 
 namespace molmesh {
 namespace {
 
 namespace fs = std::filesystem;
 
-
 class PetscEngine : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    dir_ = fs::temp_directory_path() / ("molmesh_petsc_" + std::to_string(::getpid()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-    std::ofstream(dir_ / "sphere.pqr")
-        << "ATOM      1  NA  ION     1       0.000   0.000   0.000  1.0000 10.0\n";
-    std::ofstream(dir_ / "born.pqr")
-        << "ATOM      1  I   ION     1       0.000   0.000   0.000  1.00  3.00\n";
+    dir_ = testing::test_dir();
+    testing::write_file(dir_ / "sphere.pqr",
+                        "ATOM      1  NA  ION     1       0.000   0.000   0.000  1.0000 10.0\n");
+    testing::write_file(dir_ / "born.pqr",
+                        "ATOM      1  I   ION     1       0.000   0.000   0.000  1.00  3.00\n");
     // Five levels, so 2..5 of them can be used.
     sphere_status_ = cli("hierarchy " + path("sphere.pqr") + " -o " + path("sphere.h5") +
                          " --domain exterior --outer-radius 50 --t0 0.1,0.3,0.5,0.7,0.9");
@@ -39,16 +36,13 @@ class PetscEngine : public ::testing::Test {
                        " --domain full --outer-radius 20");
   }
   static std::string path(const std::string& name) { return (dir_ / name).string(); }
-  static int cli(const std::string& args) {
-    return std::system((std::string(MOLMESH_CLI_PATH) + " -q " + args + " > /dev/null").c_str());
-  }
+  static int cli(const std::string& args) { return testing::run_cli("-q " + args).exit_code; }
   // Runs `command` writing JSON to `name`; returns the parsed JSON (empty on failure).
   static nlohmann::json run_json(const std::string& command, const std::string& name) {
-    const std::string full =
-        command + " --no-fields --json " + path(name) + " > " + path(name + ".log") + " 2>&1";
-    if (std::system(full.c_str()) != 0) {
-      std::ifstream log(path(name + ".log"));
-      ADD_FAILURE() << full << "\n" << std::string(std::istreambuf_iterator<char>(log), {});
+    const std::string full = command + " --no-fields --json " + path(name);
+    const testing::CommandRun run = testing::run_command(full);
+    if (run.exit_code != 0) {
+      ADD_FAILURE() << full << "\n" << run.output();
       return {};
     }
     std::ifstream in(path(name));

@@ -3,49 +3,33 @@
 // and hierarchy files say which surface they hold, and `hierarchy` takes the shared atom
 // and surface options (with its documented --t0).
 #include <gtest/gtest.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
-#include <sstream>
 #include <string>
 
 #include "molmesh/io/read_atoms.hpp"
 #include "molmesh/io/surface_mesh_io.hpp"
 #include "molmesh/pipeline/surface_pipeline.hpp"
 #include "molmesh/volume/gaussian_blur.hpp"
+#include "support/cli.hpp"
+#include "support/files.hpp"
 
 namespace molmesh {
 namespace {
 
 namespace fs = std::filesystem;
 
+// `molmesh ARGS`'s exit code, with stdout and stderr in *out.
 int run(const std::string& args, std::string* out = nullptr) {
-  const std::string cmd = std::string(MOLMESH_CLI_PATH) + " " + args + " 2>&1";
-  FILE* pipe = popen(cmd.c_str(), "r");
-  if (!pipe) return -1;
-  std::string text;
-  char buf[4096];
-  std::size_t n;
-  while ((n = fread(buf, 1, sizeof buf, pipe)) > 0) text.append(buf, n);
-  const int status = pclose(pipe);
-  if (out) *out = text;
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
-
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
+  const testing::CliRun r = testing::run_cli(args);
+  if (out) *out = r.output();
+  return r.exit_code;
 }
 
 struct TempDir {
-  fs::path path = fs::temp_directory_path() / ("molmesh_surface_kind_" + std::to_string(getpid()));
-  TempDir() { fs::create_directories(path); }
+  fs::path path = testing::test_dir();
   ~TempDir() { fs::remove_all(path); }
 };
 
@@ -69,7 +53,7 @@ TEST(SurfaceKindCli, GaussianReproducesThePaperPipelineByteForByte) {
   SurfacePipelineOptions options;
   options.isovalue = 1.0;
   write_surface_mesh(lib, surface_from_grid(blur_atoms(atoms, blur), options).surface);
-  const std::string a = slurp(cli), b = slurp(lib);
+  const std::string a = testing::slurp(cli), b = testing::slurp(lib);
   ASSERT_FALSE(a.empty());
   EXPECT_TRUE(a == b) << "the gaussian surface differs from Eq. 1 contoured directly";
 }
@@ -110,10 +94,7 @@ TEST(SurfaceKindCli, HierarchyTakesTheSharedOptionsAndInfoNamesTheSurface) {
   TempDir dir;
   const fs::path h5 = dir.path / "h.h5";
   const fs::path radii = dir.path / "radii.txt";
-  {
-    std::ofstream r(radii);
-    r << "* 1.60\n";
-  }
+  testing::write_file(radii, "* 1.60\n");
   std::string out;
   ASSERT_EQ(run("-q hierarchy " + k1a1p + " --surface vdw --coarsen 0.3 --domain interior " +
                     "--no-hetatm --radii " + radii.string() + " -o " + h5.string(),

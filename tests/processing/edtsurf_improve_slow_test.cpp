@@ -3,11 +3,8 @@
 // the paper's Fig. 10 numbers: closed and manifold, min angle >= 22°, max <= 130°, >= 88% of
 // angles in [40°, 80°], at least 2x fewer vertices, mean dislocation <= 0.05 Å.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <cstdio>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -15,16 +12,12 @@
 
 #include "molmesh/io/read_atoms.hpp"
 #include "support/cli.hpp"
+#include "support/files.hpp"
 
 namespace molmesh {
 namespace {
 
 namespace fs = std::filesystem;
-
-int shell(const std::string& cmd) {
-  const int status = std::system(cmd.c_str());
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
 
 // EDTSurf reads PDB only and assigns its own radii by atom type; hydrogens are left out as
 // in a crystal structure.
@@ -50,15 +43,13 @@ void write_heavy_atom_pdb(const Atoms& atoms, const fs::path& path) {
 }
 
 TEST(EdtsurfImprove, MacheMeetsThePaperFloors) {
-  const fs::path dir =
-      fs::temp_directory_path() / ("molmesh_inputs_edtsurf_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
+  const fs::path dir = testing::test_dir();
   write_heavy_atom_pdb(read_atoms(MOLMESH_TEST_DATA_DIR "/mache.pqr"), dir / "mache.pdb");
-  ASSERT_EQ(
-      shell("cd " + dir.string() + " && EDTSurf -i mache.pdb -o mache_edt -h 2 > edtsurf.log 2>&1"),
-      0)
-      << "EDTSurf (Debian package edtsurf, tools/debian-packages.txt) failed; see "
-      << (dir / "edtsurf.log");
+  const testing::CommandRun edtsurf = testing::run_command(
+      "cd " + testing::shell_quoted(dir.string()) + " && EDTSurf -i mache.pdb -o mache_edt -h 2");
+  ASSERT_EQ(edtsurf.exit_code, 0)
+      << "EDTSurf (Debian package edtsurf, tools/debian-packages.txt) failed:\n"
+      << edtsurf.output();
   const fs::path ply = dir / "mache_edt.ply";
   ASSERT_TRUE(fs::exists(ply));
 

@@ -17,18 +17,12 @@
 #include "molmesh/surface/surface_stats.hpp"
 #include "molmesh/volume/gaussian_blur.hpp"
 #include "support/cli.hpp"
+#include "support/files.hpp"
 
 namespace molmesh {
 namespace {
 
 namespace fs = std::filesystem;
-
-fs::path scratch() {
-  const auto dir =
-      fs::temp_directory_path() / ("molmesh_inputs_improve_cli_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  return dir;
-}
 
 using testing::CliRun;
 
@@ -46,9 +40,9 @@ const SurfaceMesh& raw_1a1p() {
 }
 
 TEST(ImproveCli, StlSoupComesOutClosedManifoldAndBetter) {
-  const fs::path in = scratch() / "1a1p.stl";
-  const fs::path out = scratch() / "1a1p_improved.ply";
-  const fs::path stats = scratch() / "1a1p_improved.json";
+  const fs::path in = testing::test_dir() / "1a1p.stl";
+  const fs::path out = testing::test_dir() / "1a1p_improved.ply";
+  const fs::path stats = testing::test_dir() / "1a1p_improved.json";
   write_surface_mesh(in, raw_1a1p());
   const CliRun r =
       molmesh("improve " + in.string() + " -o " + out.string() + " --stats " + stats.string());
@@ -72,10 +66,10 @@ TEST(ImproveCli, StlSoupComesOutClosedManifoldAndBetter) {
 TEST(ImproveCli, MsmsPairInvertedInputIsTurnedOutward) {
   SurfaceMesh inverted = raw_1a1p();
   for (Triangle& t : inverted.triangles) std::swap(t[1], t[2]);
-  const fs::path stem = scratch() / "1a1p_msms";
+  const fs::path stem = testing::test_dir() / "1a1p_msms";
   write_msms(stem, inverted);
-  const fs::path out = scratch() / "1a1p_msms_improved.off";
-  const fs::path stats = scratch() / "1a1p_msms_improved.json";
+  const fs::path out = testing::test_dir() / "1a1p_msms_improved.off";
+  const fs::path stats = testing::test_dir() / "1a1p_msms_improved.json";
   const CliRun r = molmesh("improve " + stem.string() + ".vert -o " + out.string() +
                            " --no-coarsen --stats " + stats.string());
   ASSERT_EQ(r.exit_code, 0) << r.err;
@@ -90,9 +84,9 @@ TEST(ImproveCli, OpenMeshIsRefusedWithCountsAndLocations) {
   SurfaceMesh open = raw_1a1p();
   open.triangles.erase(open.triangles.begin() + 100);
   open.triangles.erase(open.triangles.begin() + static_cast<long>(open.triangles.size() / 2));
-  const fs::path in = scratch() / "open.off";
+  const fs::path in = testing::test_dir() / "open.off";
   write_surface_mesh(in, open);
-  const fs::path out = scratch() / "open_improved.off";
+  const fs::path out = testing::test_dir() / "open_improved.off";
   fs::remove(out);
   const CliRun r = molmesh("improve " + in.string() + " -o " + out.string());
   EXPECT_EQ(r.exit_code, 1) << r.err;
@@ -102,9 +96,10 @@ TEST(ImproveCli, OpenMeshIsRefusedWithCountsAndLocations) {
 }
 
 TEST(ImproveCli, UnknownFormatIsAnInputError) {
-  const fs::path in = scratch() / "mesh.xyz";
+  const fs::path in = testing::test_dir() / "mesh.xyz";
   std::ofstream(in) << "1 2 3\n";
-  const CliRun r = molmesh("improve " + in.string() + " -o " + (scratch() / "x.off").string());
+  const CliRun r =
+      molmesh("improve " + in.string() + " -o " + (testing::test_dir() / "x.off").string());
   EXPECT_EQ(r.exit_code, 3) << r.err;
 }
 

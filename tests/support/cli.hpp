@@ -1,17 +1,14 @@
 #pragma once
 // Runs the molmesh command-line program (MOLMESH_CLI_PATH) the way a user does, for the
-// tests that check a command end to end, and reports how it ended: robustness tests must tell
-// "clear error" from "crash". One runner for every test folder.
+// tests that check a command end to end, and reports how it ended (support/process.hpp):
+// robustness tests must tell "clear error" from "crash". One runner for every test folder.
 #include <string>
+
+#include "support/process.hpp"
 
 namespace molmesh::testing {
 
-struct CliRun {
-  int exit_code = -1;  // the program's exit status; -1 if it did not exit normally
-  int signal = 0;      // the signal that ended it, 0 when it exited
-  std::string out;     // what it wrote to stdout
-  std::string err;     // what it wrote to stderr
-};
+using CliRun = CommandRun;
 
 // Runs `molmesh ARGS` through the shell (ARGS is spliced in as written, so quote paths
 // with spaces) with stdout and stderr captured.

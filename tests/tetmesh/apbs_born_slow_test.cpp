@@ -2,9 +2,7 @@
 // the Poisson-Boltzmann equation on it in finite-element mode (fe-manual, usemesh), and the
 // solvation energy must be within 3 % of Born's analytic value.
 #include <gtest/gtest.h>
-#include <unistd.h>
 
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -16,6 +14,7 @@
 #include "molmesh/io/surface_mesh_io.hpp"
 #include "molmesh/tetmesh/outer_sphere.hpp"
 #include "support/cli.hpp"
+#include "support/files.hpp"
 
 namespace molmesh {
 namespace {
@@ -33,30 +32,18 @@ std::string elec_block(const char* name, double sdie) {
   return s.str();
 }
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
 TEST(ApbsBorn, FullMeshGivesBornEnergyWithin3Percent) {
-  if (std::system("command -v apbs > /dev/null 2>&1") != 0) {
+  if (testing::run_command("command -v apbs").exit_code != 0) {
     FAIL() << "apbs is not installed (Debian package apbs)";
   }
-  const fs::path dir =
-      fs::temp_directory_path() / ("molmesh_apbs_born_" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const fs::path dir = testing::test_dir();
 
   // The ion surface: a 162-vertex icosphere of the Born radius, given to the CLI as a
   // surface file so the mesh follows the ion surface exactly (APBS's accuracy is set by
   // how well the dielectric boundary is resolved).
   write_surface_mesh(dir / "ion_surface.off", icosphere(Vec3::Zero(), 3.0, 2));
-  {
-    std::ofstream pqr(dir / "ion.pqr");
-    pqr << "ATOM      1  I   ION     1       0.000   0.000   0.000  1.00  3.00\n";
-  }
+  testing::write_file(dir / "ion.pqr",
+                      "ATOM      1  I   ION     1       0.000   0.000   0.000  1.00  3.00\n");
   const testing::CliRun run =
       testing::run_cli_in(dir.string(),
                           "-q tetmesh ion_surface.off --domain full --outer-radius 20 "
@@ -75,9 +62,10 @@ TEST(ApbsBorn, FullMeshGivesBornEnergyWithin3Percent) {
        << elec_block("born", 78.54) << elec_block("born_ref", 1.0)
        << "print elecEnergy born - born_ref end\nquit\n";
   }
-  const std::string apbs_cmd = "cd '" + dir.string() + "' && apbs born.in > apbs.out 2> apbs.err";
-  ASSERT_EQ(std::system(apbs_cmd.c_str()), 0) << slurp(dir / "apbs.err");
-  const std::string out = slurp(dir / "apbs.out");
+  const testing::CommandRun apbs =
+      testing::run_command("cd " + testing::shell_quoted(dir.string()) + " && apbs born.in");
+  ASSERT_EQ(apbs.exit_code, 0) << apbs.err;
+  const std::string& out = apbs.out;
   // e.g. "  Global net ELEC energy = -2.286071850994E+02 kJ/mol"
   const std::regex energy(R"(Global net ELEC energy\s*=\s*([-+0-9.eE]+)\s*kJ/mol)");
   std::smatch match;

@@ -9,6 +9,7 @@
 
 #include "molmesh/core/error.hpp"
 #include "molmesh/tetmesh/outer_sphere.hpp"
+#include "molmesh/tetmesh/tetgen_plc.hpp"
 #include "molmesh/tetmesh/tetrahedralize.hpp"
 #include "support/cli.hpp"
 
@@ -89,23 +90,7 @@ TEST(TetgenInput, ErrorsTetgenRaisesAreExceptionsNotCrashes) {
   add_box(s, Vec3(0, 0, 0), Vec3(1, 1, 1));
   add_box(s, Vec3(0.5, 0.5, 0.5), Vec3(1.5, 1.5, 1.5));
   tetgenio in;
-  in.firstnumber = 0;
-  in.numberofpoints = static_cast<int>(s.points.size());
-  in.pointlist = new REAL[s.points.size() * 3];
-  for (std::size_t i = 0; i < s.points.size(); ++i)
-    for (int d = 0; d < 3; ++d) in.pointlist[3 * i + d] = s.points[i][d];
-  in.numberoffacets = static_cast<int>(s.triangles.size());
-  in.facetlist = new tetgenio::facet[s.triangles.size()];
-  for (std::size_t f = 0; f < s.triangles.size(); ++f) {
-    tetgenio::facet& facet = in.facetlist[f];
-    tetgenio::init(&facet);
-    facet.numberofpolygons = 1;
-    facet.polygonlist = new tetgenio::polygon[1];
-    tetgenio::init(&facet.polygonlist[0]);
-    facet.polygonlist[0].numberofvertices = 3;
-    const Triangle& t = s.triangles[f];
-    facet.polygonlist[0].vertexlist = new int[3]{t[0], t[1], t[2]};
-  }
+  detail::fill_plc(s, SurfaceMesh{}, {}, in);
   tetgenio out;
   tetgenbehavior behavior;
   std::string switches = "pYzQ";
