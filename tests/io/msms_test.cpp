@@ -18,7 +18,8 @@ namespace molmesh {
 namespace {
 
 std::filesystem::path scratch(const std::string& name) {
-  const auto dir = std::filesystem::temp_directory_path() / ("molmesh_inputs_msms_" + std::to_string(::getpid()));
+  const auto dir = std::filesystem::temp_directory_path() /
+                   ("molmesh_inputs_msms_" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
   return dir / name;
 }
@@ -95,6 +96,25 @@ TEST(Msms, ErrorsNameTheFileAndLine) {
   EXPECT_THROW(read_msms(stem), InputError);  // fewer faces than announced
   std::filesystem::remove(stem.string() + ".face");
   EXPECT_THROW(read_msms(stem.string() + ".vert"), InputError);  // the pair is incomplete
+}
+
+// A line of form feeds and vertical tabs has no fields, so it is a blank line; the reader
+// used to take the first field of its empty field list (fuzz input
+// tests/fuzz/crashes/msms/).
+TEST(Msms, FormFeedLinesAreBlank) {
+  const auto stem = scratch("formfeed");
+  write_tetrahedron(stem);
+  write_text(stem.string() + ".vert",
+             "\f\v\n# vertices\n\f\n 4 1 3.00 1.50\n\v\n 0 0 0\n 1 0 0\n 0 1 0\n 0 0 1\n");
+  EXPECT_EQ(read_msms(stem).points.size(), 4u);
+  write_text(stem.string() + ".vert", "\f\n 2 1 3.00 1.50\n\f\v\n 0 0 0\n 1 x 0\n");
+  try {
+    read_msms(stem);
+    FAIL() << "a vertex with a non-number was accepted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.line(), 5u) << e.what();
+    EXPECT_NE(std::string(e.what()).find("formfeed.vert:5:"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace
