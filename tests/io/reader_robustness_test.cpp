@@ -116,6 +116,24 @@ TEST(ReaderRobustness, PlyIndicesAndMarkersMustBeIntegersInRange) {
   expect_input_error([&] { parse_ply(ply, "m.ply"); }, {"m.ply", "marker", "not an integer"});
 }
 
+TEST(ReaderRobustness, PlyHasOneVertexAndOneFaceElement) {
+  // A second vertex element, with a marker where the first had none, gave 2 points and 1
+  // vertex marker (fuzz inputs tests/fuzz/crashes/ply/ply-second-vertex-element-*).
+  const std::string vertices =
+      "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\n"
+      "property float z\nelement vertex 1\nproperty float x\nproperty float y\n"
+      "property float z\nproperty int marker\nend_header\n0 0 0\n1 0 0 7\n";
+  expect_input_error([&] { parse_ply(vertices, "v.ply"); },
+                     {"v.ply:7:", "second 'vertex' element", "line 3"});
+  const std::string faces =
+      "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+      "property float z\nelement face 1\nproperty list uchar int vertex_indices\n"
+      "property int marker\nelement face 1\nproperty list uchar int vertex_indices\n"
+      "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2 4\n3 0 2 1\n";
+  expect_input_error([&] { parse_ply(faces, "f.ply"); },
+                     {"f.ply:10:", "second 'face' element", "line 7"});
+}
+
 TEST(ReaderRobustness, NonFiniteValuesAreErrorsInEveryReader) {
   const std::string dx =
       "object 1 class gridpositions counts 2 2 2\norigin 0 0 0\n"

@@ -205,6 +205,14 @@ SurfaceMesh parse_ply(const std::string& bytes, const std::string& name) {
     } else if (f[0] == "element") {
       const auto count = f.size() == 3 ? parse_integer(f[2]) : std::nullopt;
       if (!count || *count < 0) throw InputError(name, n, "expected 'element NAME COUNT'");
+      // One vertex and one face element: the points of two would share one index space
+      // and their marker arrays would not line up with the points (or faces).
+      if (f[1] == "vertex" || f[1] == "face")
+        for (const Element& e : elements)
+          if (e.name == f[1])
+            throw InputError(name, n,
+                             "a second '" + e.name + "' element (the first is on line " +
+                                 std::to_string(e.header_line) + ")");
       elements.push_back({std::string(f[1]), static_cast<std::size_t>(*count), {}, n});
     } else if (f[0] == "property") {
       if (elements.empty()) throw InputError(name, n, "property before any element");
