@@ -186,6 +186,39 @@ TEST(Structure, MmcifAndGzipGiveTheSameAtoms) {
   EXPECT_LT((zipped[100].center - pdb[100].center).norm(), 1e-12);
 }
 
+TEST(Structure, MmcifCoordinateThatIsNotANumberNamesItsLine) {
+  // gemmi reads "4.681.0" (or "?") as NaN and keeps the atom (fuzz inputs
+  // tests/fuzz/crashes/mmcif/mmcif-malformed-coordinate-*); parse_structure returned it and
+  // read_atoms refused it later with neither line nor value. The quoted name with a blank and
+  // the text field before the bad row check that the line is counted as gemmi tokenizes.
+  const std::string head =
+      "data_t\n# a comment\nloop_\n_atom_site.group_PDB\n_atom_site.id\n"
+      "_atom_site.type_symbol\n_atom_site.label_atom_id\n_atom_site.label_alt_id\n"
+      "_atom_site.label_comp_id\n_atom_site.label_asym_id\n_atom_site.Cartn_x\n"
+      "_atom_site.Cartn_y\n_atom_site.Cartn_z\n_atom_site.occupancy\n"
+      "_atom_site.B_iso_or_equiv\n_atom_site.auth_seq_id\n"
+      "ATOM 1 N N . ALA A 0.0 0.0 0.0 1 0 1\n"
+      "ATOM 2 C \"C A\" . ALA A 1.5 0.0 0.0 1 0 1\n"
+      "ATOM 3 C\n;CB\n;\n. ALA A 2.0 1.4 0.0 1 0 1\n";
+  EXPECT_EQ(
+      read_atoms(write_text("good.cif", head + "ATOM 4 O O . ALA A 1.2 4.6 0 1 0 1\n")).size(), 4u);
+  expect_input_error(
+      [&] { read_atoms(write_text("bad.cif", head + "ATOM 4 O O . ALA A 1.2 4.681.0 0 1 0 1\n")); },
+      {"bad.cif:23:", "_atom_site.Cartn_y '4.681.0' of atom 4 is not a finite number"});
+  // One atom as tag-value pairs: the line of the tag.
+  expect_input_error(
+      [] {
+        read_atoms(write_text("pair.cif",
+                              "data_t\n_atom_site.id 1\n_atom_site.type_symbol N\n"
+                              "_atom_site.label_atom_id N\n_atom_site.label_alt_id .\n"
+                              "_atom_site.label_comp_id ALA\n_atom_site.label_asym_id A\n"
+                              "_atom_site.Cartn_x 0\n_atom_site.Cartn_y 0\n_atom_site.Cartn_z ?\n"
+                              "_atom_site.occupancy 1\n_atom_site.B_iso_or_equiv 0\n"
+                              "_atom_site.auth_seq_id 1\n"));
+      },
+      {"pair.cif:10:", "Cartn_z '?'"});
+}
+
 TEST(Structure, TruncatedGzipIsAnInputError) {
   const std::string text = test::slurp(kData / "1a1p.pdb");
   const auto gz = test::scratch_dir() / "cut.pdb.gz";

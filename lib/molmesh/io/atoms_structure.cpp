@@ -1,5 +1,6 @@
 #include "molmesh/io/atoms_structure.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <gemmi/cif.hpp>
@@ -33,6 +34,80 @@ std::optional<std::pair<std::size_t, std::string>> cif_position(std::string_view
   return std::pair{static_cast<std::size_t>(*line), std::string(what.substr(k + 2))};
 }
 
+// The line of token `target` (0 is the "loop_" keyword, then the tags, then the values) of
+// the loop that starts at line `loop_line`, tokenized as gemmi's CIF grammar does: blanks
+// are space, tab, CR and LF; '#' at a token start comments to the line end; a value is a
+// text field (';' at a line start up to the next line starting with ';'), a quoted string
+// (up to the quote followed by a blank or '#') or a run of non-blanks. gemmi keeps no
+// position per value, and this runs only to word an error: 0 when the text runs out.
+std::size_t cif_token_line(std::string_view text, std::size_t loop_line, std::size_t target) {
+  std::size_t pos = 0, line = 1;
+  while (line < loop_line && pos < text.size()) {
+    if (text[pos] == '\n') ++line;
+    ++pos;
+  }
+  const auto blank = [](char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n'; };
+  std::size_t token = 0;
+  while (pos < text.size()) {
+    const char c = text[pos];
+    if (blank(c)) {
+      if (c == '\n') ++line;
+      ++pos;
+    } else if (c == '#') {
+      while (pos < text.size() && text[pos] != '\n') ++pos;
+    } else if (token++ == target) {
+      return line;
+    } else if (c == ';' && (pos == 0 || text[pos - 1] == '\n')) {
+      const std::size_t end = text.find("\n;", pos);
+      if (end == std::string_view::npos) return 0;
+      line += static_cast<std::size_t>(
+          std::count(text.begin() + static_cast<std::ptrdiff_t>(pos),
+                     text.begin() + static_cast<std::ptrdiff_t>(end) + 1, '\n'));
+      pos = end + 2;
+    } else if (c == '\'' || c == '"') {
+      ++pos;
+      while (pos < text.size() && text[pos] != '\n' &&
+             !(text[pos] == c &&
+               (pos + 1 == text.size() || blank(text[pos + 1]) || text[pos + 1] == '#')))
+        ++pos;
+      if (pos < text.size() && text[pos] == c) ++pos;
+    } else {
+      while (pos < text.size() && !blank(text[pos])) ++pos;
+    }
+  }
+  return 0;
+}
+
+// gemmi reads a coordinate it cannot parse ("4.681.0", "0.62w", "?", ".") as NaN and keeps
+// the atom, so the block make_structure reads is checked first, with gemmi's own number
+// parser so that what passes here is what it reads.
+void require_finite_coordinates(gemmi::cif::Block& block, std::string_view text,
+                                const std::string& name) {
+  gemmi::cif::Table table = block.find("_atom_site.", {"Cartn_x", "Cartn_y", "Cartn_z"});
+  const char* axes[3] = {"Cartn_x", "Cartn_y", "Cartn_z"};
+  for (const auto row : table) {
+    for (std::size_t k = 0; k < 3; ++k) {
+      const std::string& value = row[k];
+      if (std::isfinite(gemmi::cif::as_number(value))) continue;
+      const int column = table.positions[k];
+      std::size_t line = 0;
+      if (table.loop_item != nullptr) {
+        const auto& loop = table.loop_item->loop;
+        const std::size_t index = static_cast<std::size_t>(row.row_index) * loop.tags.size() +
+                                  static_cast<std::size_t>(column);
+        line = cif_token_line(text, static_cast<std::size_t>(table.loop_item->line_number),
+                              1 + loop.tags.size() + index);
+      } else if (column >= 0) {  // single-atom file: tag-value pairs
+        line = static_cast<std::size_t>(block.items[static_cast<std::size_t>(column)].line_number);
+      }
+      throw InputError(name, line,
+                       std::string("_atom_site.") + axes[k] + " " + io_detail::quoted(value) +
+                           " of atom " + std::to_string(row.row_index + 1) +
+                           " is not a finite number");
+    }
+  }
+}
+
 }  // namespace
 
 StructureAtoms parse_structure(const std::string& contents, const std::string& name, bool mmcif,
@@ -58,6 +133,7 @@ StructureAtoms parse_structure(const std::string& contents, const std::string& n
     if (mmcif) {
       gemmi::cif::Document doc = gemmi::cif::read_memory(text.data(), text.size(), name.c_str());
       if (doc.blocks.empty()) throw InputError(name, "no data_ block: not an mmCIF file");
+      require_finite_coordinates(doc.blocks.front(), text, name);
       st = gemmi::make_structure(std::move(doc));
     } else {
       st = gemmi::read_pdb_from_memory(text.data(), text.size(), name);
