@@ -257,6 +257,29 @@ TEST(VolumeIo, MalformedVolumesAreInputErrors) {
                      {"none.dx", "no such file"});
 }
 
+TEST(VolumeIo, DxHoldsOneGrid) {
+  // A second gridpositions object after the data changed the counts but not the values: a
+  // 2x1x1 grid of 2 values came back as 3x1x1 (fuzz inputs
+  // tests/fuzz/crashes/dx/dx-second-grid-after-data-*).
+  const std::string grid =
+      "object 1 class gridpositions counts 2 1 1\norigin 0 0 0\ndelta 1 0 0\ndelta 0 1 0\n"
+      "delta 0 0 1\nobject 3 class array type double rank 0 items 2 data follows\n1 2\n";
+  expect_input_error(
+      [&] {
+        read_volume(
+            write_text("a.dx", grid + "object 4 class gridpositions counts 3 1 1\norigin 0 0 0\n"));
+      },
+      {"a.dx:8:", "a second gridpositions object (the first is on line 1)"});
+  expect_input_error([&] { read_volume(write_text("b.dx", grid + "origin 5 5 5\n")); },
+                     {"b.dx:8:", "a second origin line (the first is on line 2)"});
+  expect_input_error(
+      [&] {
+        read_volume(write_text(
+            "c.dx", grid + "object 5 class array type double rank 0 items 2 data follows\n3 4\n"));
+      },
+      {"c.dx:8:", "a second data array (the first is on line 6)"});
+}
+
 TEST(VolumeIo, WriterRejectsInconsistentGrids) {
   Grid g = sample_grid(false);
   g.values.pop_back();

@@ -17,8 +17,17 @@ Grid parse_dx(std::string_view text, const std::string& name) {
   Grid grid;
   bool have_counts = false, have_origin = false, have_data = false;
   int deltas = 0;
-  std::size_t counts_line = 0;
+  std::size_t counts_line = 0, origin_line = 0, data_line = 0;
   std::size_t expected = 0;
+  // One grid per file: a second gridpositions object after the data gave a grid whose
+  // counts no longer matched its values (and a second origin or array would silently
+  // replace the first).
+  auto once = [&](std::size_t first, const char* what, std::size_t n) {
+    if (first != 0)
+      throw InputError(name, n,
+                       std::string("a second ") + what + " (the first is on line " +
+                           std::to_string(first) + "); one grid per file");
+  };
   while (lines.next(line)) {
     if (const auto hash = line.find('#'); hash != std::string_view::npos)
       line = line.substr(0, hash);
@@ -28,6 +37,7 @@ Grid parse_dx(std::string_view text, const std::string& name) {
     if (f[0] == "object" && f.size() >= 4 && f[2] == "class" && f[3] == "gridpositions") {
       if (f.size() != 8 || f[4] != "counts")
         throw InputError(name, n, "expected 'object 1 class gridpositions counts nx ny nz'");
+      once(counts_line, "gridpositions object", n);
       for (int k = 0; k < 3; ++k) {
         const auto c = parse_integer(f[static_cast<std::size_t>(5 + k)]);
         if (!c || *c < 1 || *c > 1000000)
@@ -42,6 +52,8 @@ Grid parse_dx(std::string_view text, const std::string& name) {
       if (f.size() != 4) throw InputError(name, n, "expected '" + std::string(f[0]) + " x y z'");
       const Vec3 v = parse_point(f, 1, name, n);
       if (f[0] == "origin") {
+        once(origin_line, "origin line", n);
+        origin_line = n;
         grid.origin = v;
         have_origin = true;
       } else {
@@ -59,6 +71,8 @@ Grid parse_dx(std::string_view text, const std::string& name) {
       }
     } else if (f[0] == "object" && f.size() >= 4 && f[3] == "array") {
       if (!have_counts) throw InputError(name, n, "data array before the gridpositions object");
+      once(data_line, "data array", n);
+      data_line = n;
       if (!have_origin || deltas != 3)
         throw InputError(name, n, "origin or delta lines missing before the data array");
       std::optional<long long> items;
