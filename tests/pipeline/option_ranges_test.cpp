@@ -78,6 +78,13 @@ TEST(OptionRanges, OversizedGridsAndMeshesStopAtOnceWithTheMemoryTheyNeed) {
       {"surface " + kData + "/fas2.pqr --spacing 0.01 --raw -o " + (dir / "s.off"), "--spacing"},
       {"surface " + kData + "/fas2.pqr --max-memory 0.001 --raw -o " + (dir / "s.off"),
        "--max-memory"},
+      // The distance fields are held to the same limit (they ignored it: a 22 GB grid was
+      // allocated for two atoms 700 Å apart).
+      {"surface " + (dir / "far.pqr") + " --surface ses --raw -o " + (dir / "s.off"), "--spacing"},
+      {"surface " + (dir / "far.pqr") + " --surface vdw --raw -o " + (dir / "s.off"), "--spacing"},
+      {"surface " + kData + "/fas2.pqr --surface sas --max-memory 0.001 --raw -o " +
+           (dir / "s.off"),
+       "--max-memory"},
   };
   for (const auto& [command, hint] : cases) {
     const auto start = std::chrono::steady_clock::now();

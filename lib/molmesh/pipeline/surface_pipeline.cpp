@@ -142,11 +142,14 @@ Grid surface_volume(const Atoms& atoms, const SurfacePipelineOptions& options,
                     const Reporter& reporter) {
   switch (options.surface) {
     case SurfaceKind::kVdw:
-      return ball_union_field(atoms, 0.0, options.blur.spacing, reporter);
+      return ball_union_field(atoms, 0.0, options.blur.spacing, reporter,
+                              options.blur.max_memory_bytes);
     case SurfaceKind::kSas:
-      return ball_union_field(atoms, options.probe_radius, options.blur.spacing, reporter);
+      return ball_union_field(atoms, options.probe_radius, options.blur.spacing, reporter,
+                              options.blur.max_memory_bytes);
     case SurfaceKind::kSes:
-      return ses_field(atoms, options.probe_radius, options.blur.spacing, reporter);
+      return ses_field(atoms, options.probe_radius, options.blur.spacing, reporter,
+                       options.blur.max_memory_bytes);
     case SurfaceKind::kGaussian:
       break;
   }

@@ -6,14 +6,15 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <new>
 #include <string>
 
 #include "molmesh/core/error.hpp"
+#include "molmesh/volume/grid_lattice.hpp"
 
 namespace molmesh {
 
-Grid ball_union_grid(const Atoms& atoms, double grow, double spacing, int margin_cells) {
+Grid ball_union_grid(const Atoms& atoms, double grow, double spacing, int margin_cells,
+                     double max_memory_bytes, double bytes_per_sample) {
   if (!(spacing > 0.0) || !std::isfinite(spacing))
     throw Error("the grid spacing must be positive, got " + std::to_string(spacing));
   if (!(grow >= 0.0) || !std::isfinite(grow))
@@ -27,32 +28,13 @@ Grid ball_union_grid(const Atoms& atoms, double grow, double spacing, int margin
     hi = hi.cwiseMax(atom.center + Vec3::Constant(r));
   }
   if (!(lo.x() <= hi.x())) throw Error("no atom has a positive radius: the surface is empty");
-  Grid grid;
-  grid.spacing = Vec3::Constant(spacing);
-  double cells = 1.0;
-  for (int axis = 0; axis < 3; ++axis) {
-    const double first = std::floor(lo[axis] / spacing) - margin_cells;
-    const double last = std::ceil(hi[axis] / spacing) + margin_cells;
-    grid.origin[axis] = first * spacing;
-    const double n = last - first + 1;
-    cells *= n;
-    if (n > 1e6 || cells > 4e9)
-      throw Error("the distance-field grid would have more than 4e9 samples; increase `spacing`");
-    grid.dims[axis] = static_cast<int>(n);
-  }
-  return grid;
+  return lattice_around(lo, hi, spacing, margin_cells, max_memory_bytes, bytes_per_sample);
 }
 
 void ball_union_onto(const Atoms& atoms, double grow, Grid& grid, const Reporter& reporter) {
   const double h = grid.spacing.maxCoeff();
   const double floor_value = -2.0 * h;
-  try {
-    grid.values.assign(grid.size(), floor_value);
-  } catch (const std::bad_alloc&) {
-    throw Error("not enough memory for a " + std::to_string(grid.dims[0]) + " x " +
-                std::to_string(grid.dims[1]) + " x " + std::to_string(grid.dims[2]) +
-                " distance grid; increase `spacing`");
-  }
+  allocate_values(grid, floor_value);
   // Atoms whose reach (ball + two cells) touches each z-plane; a plane is written by one
   // task only, and max() is exact and order-free, so the result is thread-count independent.
   const int nx = grid.dims[0], ny = grid.dims[1], nz = grid.dims[2];
@@ -102,8 +84,9 @@ void ball_union_onto(const Atoms& atoms, double grow, Grid& grid, const Reporter
   reporter.progress("distance field", 1.0);
 }
 
-Grid ball_union_field(const Atoms& atoms, double grow, double spacing, const Reporter& reporter) {
-  Grid grid = ball_union_grid(atoms, grow, spacing, 3);
+Grid ball_union_field(const Atoms& atoms, double grow, double spacing, const Reporter& reporter,
+                      double max_memory_bytes) {
+  Grid grid = ball_union_grid(atoms, grow, spacing, 3, max_memory_bytes);
   ball_union_onto(atoms, grow, grid, reporter);
   return grid;
 }

@@ -9,15 +9,19 @@
 // two cells. Atoms with zero radius add nothing, as in Eq. 1.
 #include "molmesh/atoms/atom.hpp"
 #include "molmesh/core/reporter.hpp"
+#include "molmesh/core/resource_limits.hpp"
 #include "molmesh/volume/grid.hpp"
 
 namespace molmesh {
 
 // An empty grid (origin, spacing, dims; no values) that holds every ball of radius
-// r_i + grow plus `margin_cells` cells, origin on integer multiples of the spacing (as the
-// Gaussian grid). Throws Error for a non-positive spacing, a negative grow, no atom with a
-// positive radius, or a grid too large to allocate.
-Grid ball_union_grid(const Atoms& atoms, double grow, double spacing, int margin_cells);
+// r_i + grow plus `margin_cells` cells, on the atoms' lattice (grid_lattice.hpp). Throws
+// Error for a non-positive spacing, a negative grow, no atom with a positive radius, or a
+// grid that would need more than max_memory_bytes at bytes_per_sample (what the field
+// built on it needs per sample).
+Grid ball_union_grid(const Atoms& atoms, double grow, double spacing, int margin_cells,
+                     double max_memory_bytes = default_memory_limit(),
+                     double bytes_per_sample = sizeof(double));
 
 // Fills grid.values with U (the grid's origin, spacing and dims are kept). Deterministic:
 // a maximum does not depend on the order the atoms are visited in.
@@ -25,6 +29,7 @@ void ball_union_onto(const Atoms& atoms, double grow, Grid& grid, const Reporter
 
 // ball_union_grid + ball_union_onto with 3 margin cells.
 Grid ball_union_field(const Atoms& atoms, double grow, double spacing,
-                      const Reporter& reporter = {});
+                      const Reporter& reporter = {},
+                      double max_memory_bytes = default_memory_limit());
 
 }  // namespace molmesh

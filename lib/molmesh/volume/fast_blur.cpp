@@ -9,6 +9,7 @@
 #include <string>
 
 #include "molmesh/core/error.hpp"
+#include "molmesh/volume/grid_lattice.hpp"
 #include "molmesh/volume/recursive_gaussian.hpp"
 
 namespace molmesh {
@@ -132,26 +133,6 @@ void fast_blur_onto(const Atoms& atoms, const FastBlurOptions& options, Grid& gr
   reporter.progress("fast blur", 1.0);
 }
 
-namespace {
-
-bool reaches_boundary(const Grid& grid, double isovalue) {
-  const auto [nx, ny, nz] = grid.dims;
-  for (int k = 0; k < nz; ++k) {
-    for (int j = 0; j < ny; ++j) {
-      if (k == 0 || k == nz - 1 || j == 0 || j == ny - 1) {
-        for (int i = 0; i < nx; ++i) {
-          if (grid.at(i, j, k) >= isovalue) return true;
-        }
-      } else if (grid.at(0, j, k) >= isovalue || grid.at(nx - 1, j, k) >= isovalue) {
-        return true;
-      }
-    }
-  }
-  return false;
-}
-
-}  // namespace
-
 Grid fast_blur(const Atoms& atoms, const BlurOptions& options, SplatMethod splat_method,
                const Reporter& reporter) {
   const double h = options.spacing;
@@ -188,37 +169,9 @@ Grid fast_blur(const Atoms& atoms, const BlurOptions& options, SplatMethod splat
         "(use the exact blur to honour it)");
   }
 
-  int margin = options.margin_cells;
-  for (int attempt = 0;; ++attempt) {
-    Grid grid;
-    grid.spacing = Vec3::Constant(h);
-    std::array<double, 3> extent{};
-    for (int axis = 0; axis < 3; ++axis) {
-      // The same lattice as blur_atoms (origin on multiples of h), so both can be compared
-      // sample by sample.
-      const double first = std::floor(lo[axis] / h) - margin;
-      const double last = std::ceil(hi[axis] / h) + margin;
-      extent[axis] = last - first + 1;
-      grid.origin[axis] = first * h;
-    }
-    check_grid_memory(extent, h, options.max_memory_bytes);
-    for (int axis = 0; axis < 3; ++axis) grid.dims[axis] = static_cast<int>(extent[axis]);
-    const double samples = double(grid.dims[0]) * grid.dims[1] * grid.dims[2];
-    if (samples > double(std::numeric_limits<std::int32_t>::max()) / 4) {
-      throw Error("the grid of " + std::to_string(grid.dims[0]) + " x " +
-                  std::to_string(grid.dims[1]) + " x " + std::to_string(grid.dims[2]) +
-                  " samples is too large; use a coarser `spacing`");
-    }
-    fast_blur_onto(atoms, fast, grid, reporter);
-    if (!reaches_boundary(grid, options.isovalue)) return grid;
-    if (attempt == 4) {
-      reporter.warn(
-          "the blurred field reaches the isovalue on the grid boundary; the surface is closed "
-          "along the boundary");
-      return grid;
-    }
-    margin = 2 * margin + 4;
-  }
+  return sample_enclosing(
+      lo, hi, h, options.margin_cells, options.isovalue, options.max_memory_bytes,
+      [&](Grid& grid) { fast_blur_onto(atoms, fast, grid, reporter); }, reporter);
 }
 
 }  // namespace molmesh

@@ -14,6 +14,7 @@
 #include <string>
 
 #include "molmesh/core/error.hpp"
+#include "molmesh/volume/grid_lattice.hpp"
 
 namespace molmesh {
 
@@ -38,17 +39,6 @@ struct AtomKernel {
 struct Box {
   Vec3 lo, hi;
 };
-
-std::string grid_size_text(const std::array<int, 3>& dims) {
-  return std::to_string(dims[0]) + " x " + std::to_string(dims[1]) + " x " +
-         std::to_string(dims[2]);
-}
-
-std::string format_extent(const std::array<double, 3>& extent) {
-  char buf[96];
-  std::snprintf(buf, sizeof buf, "%.0f x %.0f x %.0f", extent[0], extent[1], extent[2]);
-  return buf;
-}
 
 // Samples the blurred field on the grid `grid` (origin, spacing, dims already set).
 void accumulate(Grid& grid, const Atoms& atoms, const std::vector<int>& active,
@@ -140,30 +130,7 @@ void accumulate(Grid& grid, const Atoms& atoms, const std::vector<int>& active,
   });
 }
 
-bool boundary_reaches(const Grid& grid, double isovalue) {
-  const auto [nx, ny, nz] = grid.dims;
-  for (int k = 0; k < nz; ++k)
-    for (int j = 0; j < ny; ++j) {
-      const bool full_row = k == 0 || k == nz - 1 || j == 0 || j == ny - 1;
-      if (full_row) {
-        for (int i = 0; i < nx; ++i)
-          if (grid.at(i, j, k) >= isovalue) return true;
-      } else if (grid.at(0, j, k) >= isovalue || grid.at(nx - 1, j, k) >= isovalue) {
-        return true;
-      }
-    }
-  return false;
-}
-
 }  // namespace
-
-void check_grid_memory(const std::array<double, 3>& extent, double h, double max_memory_bytes) {
-  char spacing[32];
-  std::snprintf(spacing, sizeof spacing, "%g", h);
-  check_memory(extent[0] * extent[1] * extent[2] * sizeof(double), max_memory_bytes,
-               "the grid of " + format_extent(extent) + " samples (spacing " + spacing + " Å)",
-               "use a coarser `spacing`, or check the coordinates (atoms far apart)");
-}
 
 void check_blur_options(const BlurOptions& options) {
   const double h = options.spacing;
@@ -214,46 +181,16 @@ Grid blur_atoms(const Atoms& atoms, const BlurOptions& options, const Reporter& 
   }
 
   const double cutoff_value = options.truncation * options.isovalue;
-  int margin = options.margin_cells;
-  for (int attempt = 0;; ++attempt) {
-    Grid grid;
-    grid.spacing = Vec3::Constant(h);
-    std::array<double, 3> extent{};
-    for (int axis = 0; axis < 3; ++axis) {
-      // Origins on multiples of the spacing: translating the molecule by whole cells
-      // translates the samples exactly.
-      const double lo = std::floor(box.lo[axis] / h) - margin;
-      const double hi = std::ceil(box.hi[axis] / h) + margin;
-      extent[axis] = hi - lo + 1;
-      grid.origin[axis] = lo * h;
-    }
-    check_grid_memory(extent, h, options.max_memory_bytes);
-    for (int axis = 0; axis < 3; ++axis) grid.dims[axis] = static_cast<int>(extent[axis]);
-    const double samples = double(grid.dims[0]) * grid.dims[1] * grid.dims[2];
-    if (samples > double(std::numeric_limits<std::int32_t>::max()) / 4)
-      throw Error("the grid of " + grid_size_text(grid.dims) +
-                  " samples is too large; use a coarser `spacing`");
-    try {
-      grid.values.assign(grid.size(), 0.0);
-    } catch (const std::bad_alloc&) {
-      throw Error("not enough memory for a grid of " + grid_size_text(grid.dims) +
-                  " samples; use a coarser `spacing`");
-    }
-    reporter.progress("blur", 0.0);
-    accumulate(grid, atoms, active, blob, cutoff_value, reporter);
-    if (!boundary_reaches(grid, options.isovalue)) {
-      reporter.progress("blur", 1.0);
-      return grid;
-    }
-    if (attempt == 4) {
-      reporter.warn(
-          "the blurred field reaches the isovalue on the grid boundary; the surface "
-          "is closed along the boundary");
-      reporter.progress("blur", 1.0);
-      return grid;
-    }
-    margin = 2 * margin + 4;  // overlapping tails reach farther than any lone atom
-  }
+  Grid grid = sample_enclosing(
+      box.lo, box.hi, h, options.margin_cells, options.isovalue, options.max_memory_bytes,
+      [&](Grid& g) {
+        allocate_values(g, 0.0);
+        reporter.progress("blur", 0.0);
+        accumulate(g, atoms, active, blob, cutoff_value, reporter);
+      },
+      reporter);
+  reporter.progress("blur", 1.0);
+  return grid;
 }
 
 }  // namespace molmesh

@@ -47,10 +47,6 @@ struct BlurredAtom {
 // non-finite B_i, a non-finite position, or no atom with a positive radius.
 std::vector<BlurredAtom> blurred_atoms(const Atoms& atoms, double blobbyness);
 
-// Throws Error (needed memory, the limit, "use a coarser --spacing") when a grid of
-// extent[0] x extent[1] x extent[2] samples of spacing h needs more than max_memory_bytes.
-void check_grid_memory(const std::array<double, 3>& extent, double h, double max_memory_bytes);
-
 // Atoms with zero radius add nothing. Throws Error for non-negative blobbyness, a
 // non-positive spacing/isovalue/truncation, no atom with a positive radius, or a grid too
 // large to allocate (the message gives its size). Deterministic: the sum at each grid point

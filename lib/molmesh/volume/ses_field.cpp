@@ -4,6 +4,7 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <cstdint>
 #include <cmath>
 #include <limits>
 
@@ -221,8 +222,13 @@ class BoundaryDistance {
 
 }  // namespace
 
-Grid ses_field(const Atoms& atoms, double probe, double spacing, const Reporter& reporter) {
-  Grid grid = ball_union_grid(atoms, probe, spacing, 3);
+Grid ses_field(const Atoms& atoms, double probe, double spacing, const Reporter& reporter,
+               double max_memory_bytes) {
+  // Per sample: the field, the outside mask, the distance transform's squared distance and
+  // nearest site.
+  constexpr double kBytesPerSample =
+      sizeof(double) + sizeof(char) + sizeof(double) + sizeof(std::int64_t);
+  Grid grid = ball_union_grid(atoms, probe, spacing, 3, max_memory_bytes, kBytesPerSample);
   ball_union_onto(atoms, probe, grid, reporter);  // the SAS field, > 0 inside the SAS
   reporter.progress("distance transform", 0.0);
   std::vector<char> outside(grid.size());

@@ -11,13 +11,16 @@
 // within marching cubes' interpolation error, not to within a voxel.
 #include "molmesh/atoms/atom.hpp"
 #include "molmesh/core/reporter.hpp"
+#include "molmesh/core/resource_limits.hpp"
 #include "molmesh/volume/grid.hpp"
 
 namespace molmesh {
 
 // Throws Error for a non-positive spacing, a negative probe radius, no atom with a
-// positive radius, or a grid too large to allocate. probe = 0 gives the vdW field.
+// positive radius, or a grid whose field and distance transform would need more than
+// max_memory_bytes (said before allocating). probe = 0 gives the vdW field.
 // Deterministic and independent of the thread count.
-Grid ses_field(const Atoms& atoms, double probe, double spacing, const Reporter& reporter = {});
+Grid ses_field(const Atoms& atoms, double probe, double spacing, const Reporter& reporter = {},
+               double max_memory_bytes = default_memory_limit());
 
 }  // namespace molmesh
