@@ -65,6 +65,12 @@ void probe_hierarchy(const std::filesystem::path& path) {
   }
   if (child == 0) {
     ::close(channel[0]);
+    // A fault here must end this child with its signal and nothing else: fault handlers
+    // inherited from the parent (a sanitizer's, a fuzzer's that saves the input as a crash
+    // of the parent, Python's faulthandler) would report the contained libhdf5 fault as the
+    // program's own. (Aborts keep their handlers: an abort is our own assertion, not
+    // libhdf5 reading bad bytes.)
+    for (int fault : {SIGSEGV, SIGBUS, SIGFPE, SIGILL}) ::signal(fault, SIG_DFL);
     std::string message;
     int code = 0;
     try {
