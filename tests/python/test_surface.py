@@ -103,7 +103,7 @@ def test_ses_surface_is_the_clis_bit_for_bit(tmp_path):
     assert surf.vertices.shape != molmesh.surface(atoms).vertices.shape
     with pytest.raises(ValueError, match="surface='sphere': expected one of"):
         molmesh.surface(atoms, surface="sphere")
-    with pytest.raises(molmesh.Error, match="probe radius"):
+    with pytest.raises(molmesh.Error, match="`probe_radius`"):
         molmesh.surface(atoms, surface="sas", probe_radius=-1.0)
 
 

@@ -47,7 +47,14 @@ void add_surface_pipeline_options(CLI::App& cmd, SurfacePipelineOptions& options
   add_spec_option(cmd, specs.blobbyness, options.blur.blobbyness)
       ->capture_default_str()
       ->type_name("B");
-  add_spec_option(cmd, specs.isovalue, options.isovalue)->capture_default_str()->type_name("T");
+  // Only finite here: a volume input's level may be zero or negative (a potential map), so
+  // the atoms' range (0, inf) is checked by SurfacePipelineOptions::validate() once the input
+  // is known (docs/cli.md).
+  cmd.add_option(cli_names(specs.isovalue), options.isovalue,
+                 cli_help(specs.isovalue, "; > 0 for atoms, any finite level for a volume input"))
+      ->check(finite_in(-kLargestValue, kLargestValue))
+      ->capture_default_str()
+      ->type_name("T");
   add_spec_option(cmd, specs.min_cavity_volume, options.min_cavity_volume)
       ->capture_default_str()
       ->type_name("V");

@@ -31,4 +31,11 @@ struct OptionSpec {
 // "[0, 70]", "(0, 10000]", "(0, inf)": the bounds as printf's %g prints them.
 std::string range_text(const OptionRange& range);
 
+// Throws molmesh::Error naming the option by its backquoted member (core/error.hpp), with
+// the range and the value got, when `value` is NaN, infinite or outside `range`. For the
+// validate() functions of the options structs, so the front ends' checks and the library's
+// say the same. A spec without a range accepts every value.
+void check_range(std::string_view member, const OptionRange& range, double value);
+void check_range(const OptionSpec& spec, double value);
+
 }  // namespace molmesh

@@ -8,6 +8,7 @@
 #include <limits>
 
 #include "molmesh/core/option_spec.hpp"
+#include "molmesh/processing/processing_option_specs.hpp"
 
 namespace molmesh {
 
@@ -27,7 +28,7 @@ inline constexpr ImproveOptionSpecs kImproveOptionSpecs{
            "Coarsening thresholds T0 of Eq. 6, one coarsening round each, in order (larger "
            "removes more vertices; features survive better with several small rounds; none: "
            "no coarsening)",
-           OptionRange{0.0, std::numeric_limits<double>::infinity(), false}},
+           kT0Range},
     .repair_only = {"repair_only", "repair_only", "Write the repaired mesh without any processing",
                     std::nullopt},
     .merge_tolerance = {"merge_tolerance", "merge_tolerance",

@@ -5,6 +5,7 @@
 
 #include "molmesh/core/error.hpp"
 #include "molmesh/core/timing.hpp"
+#include "molmesh/pipeline/improve_option_specs.hpp"
 
 namespace molmesh {
 
@@ -14,9 +15,15 @@ ProcessingOptions user_mesh_processing() {
   return options;
 }
 
+void ImprovePipelineOptions::validate() const {
+  check_range(kImproveOptionSpecs.merge_tolerance, repair.merge_tolerance);
+  processing.validate();  // T0 included: kT0Range, kImproveOptionSpecs.t0 range
+}
+
 ImprovePipelineResult improve_surface(const SurfaceMesh& input, std::string_view name,
                                       const ImprovePipelineOptions& options,
                                       const Reporter& reporter) {
+  options.validate();
   const std::string label(name);
   if (input.triangles.empty()) throw InputError(label, "the mesh has no triangles");
   ImprovePipelineResult result;

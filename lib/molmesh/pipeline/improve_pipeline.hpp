@@ -23,6 +23,12 @@ struct ImprovePipelineOptions {
   MeshRepairOptions repair;
   ProcessingOptions processing = user_mesh_processing();  // processing.t0 empty: no coarsening
   bool repair_only = false;                               // stop after the repair
+
+  // Throws molmesh::Error naming the member (core/error.hpp) for a value outside the range of
+  // its entry in pipeline/improve_option_specs.hpp (the front ends' ranges), NaN or inf
+  // included, then checks `processing` (ProcessingOptions::validate()). improve_surface()
+  // calls it first.
+  void validate() const;
 };
 
 struct ImprovePipelineResult {
@@ -34,7 +40,8 @@ struct ImprovePipelineResult {
 };
 
 // `name` (a file name, or "mesh") prefixes error messages and the repair warning. Throws
-// InputError for a mesh without triangles and molmesh::Error for what repair cannot fix.
+// InputError for a mesh without triangles and molmesh::Error for invalid options or what
+// repair cannot fix.
 ImprovePipelineResult improve_surface(const SurfaceMesh& input, std::string_view name,
                                       const ImprovePipelineOptions& options,
                                       const Reporter& reporter = {});

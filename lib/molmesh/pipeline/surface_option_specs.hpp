@@ -9,6 +9,7 @@
 #include <limits>
 
 #include "molmesh/core/option_spec.hpp"
+#include "molmesh/processing/processing_option_specs.hpp"
 
 namespace molmesh {
 
@@ -83,7 +84,7 @@ inline constexpr SurfaceOptionSpecs kSurfaceOptionSpecs{
                 "Coarsening thresholds T0 of Eq. 6: one round of improve -> coarsen -> smooth "
                 "-> improve per value (larger T0 deletes more vertices; the paper uses 0.2 "
                 "once; none: improve only)",
-                OptionRange{0.0, std::numeric_limits<double>::infinity(), false}},
+                kT0Range},
     .keep_spheres = {"keep_spheres", "keep_spheres_file",
                      "Spheres (x, y, z, r in Å; docs/formats.md): no vertex inside any sphere is "
                      "removed by coarsening, so e.g. an active site stays finely meshed",

@@ -9,6 +9,7 @@
 #include "molmesh/core/error.hpp"
 #include "molmesh/core/timing.hpp"
 #include "molmesh/io/sphere_list.hpp"
+#include "molmesh/pipeline/surface_option_specs.hpp"
 #include "molmesh/surface/components.hpp"
 #include "molmesh/surface/marching_cubes.hpp"
 #include "molmesh/volume/ball_union.hpp"
@@ -118,6 +119,20 @@ GaussianField exact_field(const Atoms& atoms, const SurfacePipelineOptions& opti
 
 }  // namespace
 
+void SurfacePipelineOptions::validate(SurfaceInput input) const {
+  const SurfaceOptionSpecs& specs = kSurfaceOptionSpecs;
+  check_range(specs.probe_radius, probe_radius);
+  check_range(specs.spacing, blur.spacing);
+  check_range(specs.blobbyness, blur.blobbyness);
+  if (input == SurfaceInput::kAtoms) {
+    check_range(specs.isovalue, isovalue);
+  } else if (!std::isfinite(isovalue)) {
+    throw Error("`isovalue` must be a finite number (got " + std::to_string(isovalue) + ")");
+  }
+  check_range(specs.min_cavity_volume, min_cavity_volume);
+  processing.validate();
+}
+
 bool keeps_on_surface(const SurfacePipelineOptions& options) {
   return options.keep_on_surface.value_or(options.surface == SurfaceKind::kGaussian);
 }
@@ -162,6 +177,7 @@ Grid surface_volume(const Atoms& atoms, const SurfacePipelineOptions& options,
 
 SurfacePipelineResult surface_from_atoms(const Atoms& atoms, const SurfacePipelineOptions& options,
                                          const Reporter& reporter) {
+  options.validate(SurfaceInput::kAtoms);
   SurfacePipelineResult result;
   // Local frame: far from the origin (1e6 Å and more) coordinates lose the digits the
   // processing needs; shifted to the molecule's centre they keep them.
@@ -215,6 +231,7 @@ SurfacePipelineResult surface_from_atoms(const Atoms& atoms, const SurfacePipeli
 
 SurfacePipelineResult surface_from_grid(const Grid& grid, const SurfacePipelineOptions& options,
                                         const Reporter& reporter) {
+  options.validate(SurfaceInput::kVolume);
   SurfacePipelineResult result;
   // A volume's surface is its trilinear level set; projecting onto it is asked for explicitly
   // (maps are noisy at the voxel scale, and an unset keep_on_surface means the Gaussian's

@@ -23,6 +23,11 @@
 
 namespace molmesh {
 
+// What a surface is contoured from: atoms (surface_from_atoms) or a scalar volume
+// (surface_from_grid), whose level may be any finite number (a potential map's can be
+// negative).
+enum class SurfaceInput { kAtoms, kVolume };
+
 struct SurfacePipelineOptions {
   // Which surface of the atoms: the paper's Gaussian (blur, isovalue below) or the vdW,
   // solvent-accessible or solvent-excluded surface (distance fields sampled every
@@ -53,6 +58,13 @@ struct SurfacePipelineOptions {
   ProcessingOptions processing;
   // Sphere list (docs/formats.md) added to processing.keep_spheres; empty for none.
   std::string keep_spheres_file;
+
+  // Throws molmesh::Error naming the member (core/error.hpp) for a value outside the range of
+  // its entry in pipeline/surface_option_specs.hpp (the front ends' ranges), NaN or inf
+  // included, then checks `processing` (ProcessingOptions::validate()). The isovalue's range is
+  // for atoms; a volume's isovalue need only be finite. surface_from_atoms() and
+  // surface_from_grid() call it first.
+  void validate(SurfaceInput input) const;
 };
 
 struct StageRecord {

@@ -1,7 +1,6 @@
 #include "molmesh/processing/process_surface.hpp"
 
 #include <chrono>
-#include <cmath>
 #include <cstdio>
 #include <numeric>
 
@@ -10,6 +9,7 @@
 #include "molmesh/processing/coarsen.hpp"
 #include "molmesh/processing/edge_flips.hpp"
 #include "molmesh/processing/halfedge_mesh.hpp"
+#include "molmesh/processing/processing_option_specs.hpp"
 #include "molmesh/processing/project_vertices.hpp"
 #include "molmesh/processing/untangle.hpp"
 
@@ -48,8 +48,21 @@ ProcessingResult process_centred(const SurfaceMesh& input, const ProcessingOptio
 
 }  // namespace
 
+void ProcessingOptions::validate() const {
+  const ProcessingOptionSpecs& specs = kProcessingOptionSpecs;
+  for (double threshold : t0) check_range("t0", kT0Range, threshold);
+  check_range(specs.rings, rings);
+  check_range(specs.alpha, alpha);
+  check_range(specs.beta, beta);
+  check_range(specs.sweeps, improve.sweeps);
+  check_range(specs.feature_weight, improve.feature_weight);
+  check_range(specs.smooth_iterations, smoothing.normal_iterations);
+  check_range(specs.cleanup_rounds, cleanup_rounds);
+}
+
 ProcessingResult process_surface(const SurfaceMesh& input, const ProcessingOptions& options,
                                  const Reporter& reporter) {
+  options.validate();
   // Local frame: the processing's geometric tests lose their digits on coordinates far from
   // the origin (a molecule at 1e7 Å came out with 1e6 times its area, issue 18). Process
   // around the bounding-box centre, then shift back.
@@ -80,10 +93,6 @@ namespace {
 
 ProcessingResult process_centred(const SurfaceMesh& input, const ProcessingOptions& options,
                                  const Reporter& reporter) {
-  if (options.rings < 1) throw Error("`rings` must be at least 1");
-  for (double t0 : options.t0) {
-    if (!(t0 >= 0) || !std::isfinite(t0)) throw Error("coarsening threshold T0 must be >= 0");
-  }
   ProcessingResult result;
   result.mesh = input;
   result.provenance.resize(input.points.size());

@@ -23,7 +23,7 @@ struct ProcessingOptions {
   double beta = 1.0;                 // Eq. 6 exponent on λ2/λ1
   int rings = 2;                     // k-ring of the structure tensor (improvement and coarsening)
   std::vector<Sphere> keep_spheres;  // no vertex inside is deleted by coarsening
-  ImproveOptions improve;  // improve.rings is overwritten by `rings`
+  ImproveOptions improve;            // improve.rings is overwritten by `rings`
   // Sweeps of the first improvement, on the dense raw mesh: it only has to straighten the
   // marching-cubes slivers before coarsening; more sweeps cost time and change nothing
   // measurable after coarsening (docs/processing.md).
@@ -48,6 +48,11 @@ struct ProcessingOptions {
   // projection would turn one of its triangles over stays put (processing/project_vertices.hpp).
   // Must be thread-safe.
   std::function<Vec3(const Vec3&)> project;
+
+  // Throws molmesh::Error naming the member (core/error.hpp) for a value outside the range of
+  // its entry in processing/processing_option_specs.hpp (the front ends' ranges), NaN or inf
+  // included, or a T0 outside kT0Range. process_surface() calls it first.
+  void validate() const;
 };
 
 struct ProcessingStage {
@@ -63,7 +68,8 @@ struct ProcessingResult {
 };
 
 // Throws molmesh::Error for an input that is not a closed oriented manifold (coarsening
-// needs one) or for invalid options. Deterministic and independent of the thread count.
+// needs one) or for invalid options (ProcessingOptions::validate()). Deterministic and independent
+// of the thread count.
 ProcessingResult process_surface(const SurfaceMesh& input, const ProcessingOptions& options,
                                  const Reporter& reporter = {});
 

@@ -2,14 +2,19 @@
 // The names, help texts and ranges of the ProcessingOptions the front ends expose (the
 // CLI's processing options of `surface`, `improve`, `tetmesh` and `hierarchy`, the Python
 // keywords of molmesh.surface, molmesh.improve and molmesh.hierarchy), written once here.
-// Defaults are ProcessingOptions' own. The ranges are what the CLI accepts at parse time;
-// the library has no validate() for them, so Python's docstrings do not print them.
+// Defaults are ProcessingOptions' own. The ranges are what ProcessingOptions::validate()
+// accepts (process_surface.cpp), the CLI at parse time and Python's docstrings print.
 #include <array>
 #include <limits>
 
 #include "molmesh/core/option_spec.hpp"
 
 namespace molmesh {
+
+// The coarsening thresholds T0 of Eq. 6 (ProcessingOptions::t0, HierarchyOptions::t0): each
+// front end names and describes them for its command (surface's `coarsen`, improve's and the
+// hierarchy's `t0`), all with this range.
+inline constexpr OptionRange kT0Range{0.0, std::numeric_limits<double>::infinity(), false};
 
 struct ProcessingOptionSpecs {
   OptionSpec rings;
