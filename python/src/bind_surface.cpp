@@ -223,6 +223,8 @@ void bind_surface(py::module_& m) {
           throw py::type_error("surface() takes molmesh.Atoms or molmesh.Volume");
         std::shared_ptr<const Atoms> atoms = atoms_input ? input.cast<PyAtoms&>().atoms : nullptr;
         std::shared_ptr<const Grid> grid = atoms_input ? nullptr : input.cast<PyVolume&>().grid;
+        validate_surface_keywords(options,
+                                  atoms_input ? SurfaceInput::kAtoms : SurfaceInput::kVolume);
         PythonProgress bridge(progress);
         auto result = bridge.run([&](const Reporter& r) {
           return std::make_shared<SurfacePipelineResult>(

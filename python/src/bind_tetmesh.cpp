@@ -136,6 +136,7 @@ void bind_tetmesh(py::module_& m) {
         }
         std::shared_ptr<const SurfaceMesh> surface =
             atoms_input ? nullptr : input.cast<PySurface&>().mesh;
+        if (atoms_input) validate_surface_keywords(surface_options, SurfaceInput::kAtoms);
         static const Atoms kNoAtoms;
         PythonProgress bridge(progress);
         struct Out {

@@ -4,6 +4,9 @@
 #include <string>
 
 #include "molmesh/core/error.hpp"
+#include "molmesh/pipeline/improve_option_specs.hpp"
+#include "molmesh/pipeline/surface_option_specs.hpp"
+#include "molmesh/processing/processing_option_specs.hpp"
 #include "molmesh/tetmesh/tetmesh_option_specs.hpp"
 
 namespace molmesh::python {
@@ -40,9 +43,17 @@ std::string with_keywords(std::string_view message) {
         {"max_levels", "`levels`"},
         {"radii_file", "`radii`"},
     };
-    for (const OptionSpec* spec : kTetMeshOptionSpecs.all())
-      if (spec->member != spec->name)
-        keywords.emplace(std::string(spec->member), "`" + std::string(spec->name) + "`");
+    // The library's option tables, except surface's `coarsen`: its member `t0` is improve()'s
+    // and hierarchy()'s keyword (surface() and tetmesh() respell it: tables.hpp).
+    const auto add = [&keywords](const auto& specs) {
+      for (const OptionSpec* spec : specs.all())
+        if (spec->member != spec->name && spec != &kSurfaceOptionSpecs.coarsen)
+          keywords.emplace(std::string(spec->member), "`" + std::string(spec->name) + "`");
+    };
+    add(kTetMeshOptionSpecs);
+    add(kSurfaceOptionSpecs);
+    add(kProcessingOptionSpecs);
+    add(kImproveOptionSpecs);
     return keywords;
   }();
   return spell_option_names(message, kKeywords);

@@ -6,6 +6,7 @@
 
 #include "arrays.hpp"
 #include "errors.hpp"
+#include "molmesh/core/error.hpp"
 #include "molmesh/core/option_spec.hpp"
 #include "molmesh/io/sphere_list.hpp"
 #include "molmesh/pipeline/improve_option_specs.hpp"
@@ -51,16 +52,19 @@ std::string doc_of(const OptionSpec& spec, const std::string& suffix = "") {
   return doc;
 }
 
-// The docstring line of an option whose range the library does not check (no validate()):
-// its help text with keywords for members, then `suffix`.
-std::string help_of(const OptionSpec& spec, const std::string& suffix = "") {
-  return with_keywords(spec.help) + suffix;
-}
-
 // The spec's keyword.
 std::string key(const OptionSpec& spec) { return std::string(spec.name); }
 
 }  // namespace
+
+void validate_surface_keywords(const SurfacePipelineOptions& options, SurfaceInput input) {
+  try {
+    options.validate(input);
+  } catch (const Error& e) {
+    throw Error(spell_option_names(
+        e.what(), OptionSpellings{{"t0", "`" + key(kSurfaceOptionSpecs.coarsen) + "`"}}));
+  }
+}
 
 bool is_path(const py::handle& v) {
   return py::isinstance<py::str>(v) || py::hasattr(v, "__fspath__");
@@ -72,20 +76,23 @@ const OptionTable<SurfacePipelineOptions>& volume_table() {
     OptionTable<SurfacePipelineOptions> t;
     std::vector<std::pair<std::string, SurfaceKind>> kinds;
     for (SurfaceKind kind : kSurfaceKinds) kinds.emplace_back(surface_kind_name(kind), kind);
-    t.choice(key(specs.surface), MOLMESH_FIELD(surface), kinds, help_of(specs.surface));
-    t.field(key(specs.probe_radius), MOLMESH_FIELD(probe_radius), help_of(specs.probe_radius));
+    t.choice(key(specs.surface), MOLMESH_FIELD(surface), kinds, doc_of(specs.surface));
+    t.field(key(specs.probe_radius), MOLMESH_FIELD(probe_radius), doc_of(specs.probe_radius));
     t.field(key(specs.keep_on_surface), MOLMESH_FIELD(keep_on_surface),
-            help_of(specs.keep_on_surface, "; None: the kind's default"));
-    t.field(key(specs.spacing), MOLMESH_FIELD(blur.spacing), help_of(specs.spacing));
-    t.field(key(specs.blobbyness), MOLMESH_FIELD(blur.blobbyness), help_of(specs.blobbyness));
-    t.field(key(specs.isovalue), MOLMESH_FIELD(isovalue), help_of(specs.isovalue));
-    t.field(key(specs.truncation), MOLMESH_FIELD(blur.truncation), help_of(specs.truncation));
+            doc_of(specs.keep_on_surface, "; None: the kind's default"));
+    t.field(key(specs.spacing), MOLMESH_FIELD(blur.spacing), doc_of(specs.spacing));
+    t.field(key(specs.blobbyness), MOLMESH_FIELD(blur.blobbyness), doc_of(specs.blobbyness));
+    // The range is the atoms' (SurfacePipelineOptions::validate()): a Volume's level may be
+    // any finite number.
+    t.field(key(specs.isovalue), MOLMESH_FIELD(isovalue),
+            doc_of(specs.isovalue) + " for atoms; a Volume's level may be any finite number");
+    t.field(key(specs.truncation), MOLMESH_FIELD(blur.truncation), doc_of(specs.truncation));
     t.choice(key(specs.blur), MOLMESH_FIELD(blur_method),
              std::vector<std::pair<std::string, BlurMethod>>{{"exact", BlurMethod::kExact},
                                                              {"fast", BlurMethod::kFast}},
-             help_of(specs.blur));
+             doc_of(specs.blur));
     t.field(key(specs.min_cavity_volume), MOLMESH_FIELD(min_cavity_volume),
-            help_of(specs.min_cavity_volume));
+            doc_of(specs.min_cavity_volume));
     return t;
   }();
   return table;
@@ -95,17 +102,16 @@ const OptionTable<ProcessingOptions>& processing_table() {
   static const auto table = [] {
     const ProcessingOptionSpecs& specs = kProcessingOptionSpecs;
     OptionTable<ProcessingOptions> t;
-    t.field(key(specs.rings), MOLMESH_FIELD(rings), help_of(specs.rings));
-    t.field(key(specs.alpha), MOLMESH_FIELD(alpha), help_of(specs.alpha));
-    t.field(key(specs.beta), MOLMESH_FIELD(beta), help_of(specs.beta));
-    t.field(key(specs.sweeps), MOLMESH_FIELD(improve.sweeps), help_of(specs.sweeps));
+    t.field(key(specs.rings), MOLMESH_FIELD(rings), doc_of(specs.rings));
+    t.field(key(specs.alpha), MOLMESH_FIELD(alpha), doc_of(specs.alpha));
+    t.field(key(specs.beta), MOLMESH_FIELD(beta), doc_of(specs.beta));
+    t.field(key(specs.sweeps), MOLMESH_FIELD(improve.sweeps), doc_of(specs.sweeps));
     t.field(key(specs.feature_weight), MOLMESH_FIELD(improve.feature_weight),
-            help_of(specs.feature_weight));
+            doc_of(specs.feature_weight));
     t.field(key(specs.smooth_iterations), MOLMESH_FIELD(smoothing.normal_iterations),
-            help_of(specs.smooth_iterations));
-    t.field(key(specs.flips), MOLMESH_FIELD(flips), help_of(specs.flips));
-    t.field(key(specs.cleanup_rounds), MOLMESH_FIELD(cleanup_rounds),
-            help_of(specs.cleanup_rounds));
+            doc_of(specs.smooth_iterations));
+    t.field(key(specs.flips), MOLMESH_FIELD(flips), doc_of(specs.flips));
+    t.field(key(specs.cleanup_rounds), MOLMESH_FIELD(cleanup_rounds), doc_of(specs.cleanup_rounds));
     return t;
   }();
   return table;
@@ -117,9 +123,9 @@ const OptionTable<SurfacePipelineOptions>& surface_table() {
     t.nest(
         volume_table(), [](SurfacePipelineOptions & o) -> auto& { return o; });
     t.field(key(kSurfaceOptionSpecs.coarsen), MOLMESH_FIELD(processing.t0),
-            help_of(kSurfaceOptionSpecs.coarsen, " ([])"));
+            doc_of(kSurfaceOptionSpecs.coarsen, " ([])"));
     t.nest(processing_table(), MOLMESH_FIELD(processing));
-    t.field(key(kSurfaceOptionSpecs.raw), MOLMESH_FIELD(raw), help_of(kSurfaceOptionSpecs.raw));
+    t.field(key(kSurfaceOptionSpecs.raw), MOLMESH_FIELD(raw), doc_of(kSurfaceOptionSpecs.raw));
     t.nest(
         keep_spheres_table(), [](SurfacePipelineOptions & o) -> auto& { return o; });
     t.field("keep_volume", MOLMESH_FIELD(keep_volume),
@@ -150,7 +156,7 @@ const OptionTable<SurfacePipelineOptions>& keep_spheres_table() {
           if (!o.keep_spheres_file.empty()) return py::str(o.keep_spheres_file);
           return spheres_array(o.processing.keep_spheres);
         },
-        help_of(kSurfaceOptionSpecs.keep_spheres, "; a sphere file or an (n, 4) array"));
+        doc_of(kSurfaceOptionSpecs.keep_spheres, "; a sphere file or an (n, 4) array"));
     return t;
   }();
   return table;
@@ -160,11 +166,11 @@ const OptionTable<ImprovePipelineOptions>& improve_table() {
   static const auto table = [] {
     OptionTable<ImprovePipelineOptions> t;
     const ImproveOptionSpecs& specs = kImproveOptionSpecs;
-    t.field(key(specs.t0), MOLMESH_FIELD(processing.t0), help_of(specs.t0, " ([])"));
+    t.field(key(specs.t0), MOLMESH_FIELD(processing.t0), doc_of(specs.t0, " ([])"));
     t.nest(processing_table(), MOLMESH_FIELD(processing));
-    t.field(key(specs.repair_only), MOLMESH_FIELD(repair_only), help_of(specs.repair_only));
+    t.field(key(specs.repair_only), MOLMESH_FIELD(repair_only), doc_of(specs.repair_only));
     t.field(key(specs.merge_tolerance), MOLMESH_FIELD(repair.merge_tolerance),
-            help_of(specs.merge_tolerance));
+            doc_of(specs.merge_tolerance));
     return t;
   }();
   return table;

@@ -26,6 +26,11 @@ const OptionTable<TetMeshOptions>& tetmesh_table();
 // molmesh.hierarchy: t0 per level, size_growth, renumber + processing_table + tetmesh_table.
 const OptionTable<HierarchyOptions>& hierarchy_table();
 
+// options.validate(input) (the entry points call it too) with the keyword of surface() and
+// tetmesh() for the coarsening thresholds: the library's `t0` is `coarsen` there, while
+// improve() and hierarchy() call theirs t0.
+void validate_surface_keywords(const SurfacePipelineOptions& options, SurfaceInput input);
+
 // A str or os.PathLike (a file name), as opposed to an array.
 bool is_path(const py::handle& v);
 

@@ -2,8 +2,8 @@
 // The names, help texts and ranges of the ImprovePipelineOptions the front ends expose (the
 // CLI's `improve` options, the Python keywords of molmesh.improve), written once here; its
 // processing options are processing/processing_option_specs.hpp's. Defaults are
-// ImprovePipelineOptions' own. The ranges are what the CLI accepts at parse time; the
-// library has no validate() for them, so Python's docstrings do not print them.
+// ImprovePipelineOptions' own. The ranges are what ImprovePipelineOptions::validate()
+// accepts, the CLI at parse time and Python's docstrings print.
 #include <array>
 #include <limits>
 

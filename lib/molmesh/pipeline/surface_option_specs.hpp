@@ -3,8 +3,8 @@
 // CLI's surface options of `surface`, `tetmesh` and `hierarchy`, the Python keywords of
 // molmesh.surface, molmesh.tetmesh and molmesh.hierarchy), written once here; its processing
 // options are processing/processing_option_specs.hpp's. Defaults are SurfacePipelineOptions'
-// own. The ranges are what the CLI accepts at parse time; the library has no validate() for
-// them, so Python's docstrings do not print them.
+// own. The ranges are what SurfacePipelineOptions::validate() accepts (the isovalue's for
+// atoms only), the CLI at parse time and Python's docstrings print.
 #include <array>
 #include <limits>
 
