@@ -9,6 +9,8 @@
 
 #include "arrays.hpp"
 #include "bindings.hpp"
+#include "errors.hpp"
+#include "molmesh/atoms/atom_option_specs.hpp"
 #include "molmesh/io/read_atoms.hpp"
 #include "molmesh/io/sha256.hpp"
 #include "options.hpp"
@@ -21,8 +23,9 @@ namespace {
 const OptionTable<AtomReadOptions>& atom_read_table() {
   static const auto table = [] {
     OptionTable<AtomReadOptions> t;
+    const AtomOptionSpecs& specs = kAtomOptionSpecs;
     t.custom(
-        "radii",
+        std::string(specs.radii.name),
         [](AtomReadOptions& o, py::handle v) {
           if (v.is_none())
             o.radii_file.reset();
@@ -33,10 +36,11 @@ const OptionTable<AtomReadOptions>& atom_read_table() {
           if (!o.radii_file) return py::none();
           return py::str(o.radii_file->string());
         },
-        "radius table file (docs/formats.md) overriding the built-in radii; for PQR it "
-        "replaces the file's radii wherever it has an entry");
-    t.field("hetatm", MOLMESH_FIELD(include_hetatm), "include HETATM records (ligands, ions)");
-    t.field("waters", MOLMESH_FIELD(include_waters), "include water molecules (HOH, WAT, ...)");
+        with_keywords(specs.radii.help));
+    t.field(std::string(specs.hetatm.name), MOLMESH_FIELD(include_hetatm),
+            with_keywords(specs.hetatm.help));
+    t.field(std::string(specs.waters.name), MOLMESH_FIELD(include_waters),
+            with_keywords(specs.waters.help));
     t.field("hydrogens", MOLMESH_FIELD(include_hydrogens), "include hydrogen atoms");
     return t;
   }();

@@ -3,7 +3,9 @@
 #include <exception>
 #include <string>
 
+#include "molmesh/atoms/atom_option_specs.hpp"
 #include "molmesh/core/error.hpp"
+#include "molmesh/hierarchy/hierarchy_option_specs.hpp"
 #include "molmesh/pipeline/improve_option_specs.hpp"
 #include "molmesh/pipeline/surface_option_specs.hpp"
 #include "molmesh/processing/processing_option_specs.hpp"
@@ -41,7 +43,6 @@ std::string with_keywords(std::string_view message) {
   static const OptionSpellings kKeywords = [] {
     OptionSpellings keywords{
         {"max_levels", "`levels`"},
-        {"radii_file", "`radii`"},
     };
     // The library's option tables, except surface's `coarsen`: its member `t0` is improve()'s
     // and hierarchy()'s keyword (surface() and tetmesh() respell it: tables.hpp).
@@ -54,6 +55,8 @@ std::string with_keywords(std::string_view message) {
     add(kSurfaceOptionSpecs);
     add(kProcessingOptionSpecs);
     add(kImproveOptionSpecs);
+    add(kAtomOptionSpecs);
+    add(kHierarchyOptionSpecs);
     return keywords;
   }();
   return spell_option_names(message, kKeywords);

@@ -8,6 +8,7 @@
 #include "errors.hpp"
 #include "molmesh/core/error.hpp"
 #include "molmesh/core/option_spec.hpp"
+#include "molmesh/hierarchy/hierarchy_option_specs.hpp"
 #include "molmesh/io/sphere_list.hpp"
 #include "molmesh/pipeline/improve_option_specs.hpp"
 #include "molmesh/pipeline/surface_option_specs.hpp"
@@ -217,11 +218,10 @@ const OptionTable<TetMeshOptions>& tetmesh_table() {
 const OptionTable<HierarchyOptions>& hierarchy_table() {
   static const auto table = [] {
     OptionTable<HierarchyOptions> t;
-    t.field("t0", MOLMESH_FIELD(t0), "one level per coarsening threshold T0, finest first");
-    t.field("size_growth", MOLMESH_FIELD(size_growth),
-            "level L meshes its volume with size_factor * size_growth^L, " +
-                range_text({kMinSizeGrowth, kMaxSizeGrowth, false}));
-    t.field("renumber", MOLMESH_FIELD(renumber), "reverse Cuthill-McKee on every volume mesh");
+    const HierarchyOptionSpecs& specs = kHierarchyOptionSpecs;
+    t.field(key(specs.t0), MOLMESH_FIELD(t0), doc_of(specs.t0));
+    t.field(key(specs.size_growth), MOLMESH_FIELD(size_growth), doc_of(specs.size_growth));
+    t.field(key(specs.renumber), MOLMESH_FIELD(renumber), doc_of(specs.renumber));
     t.nest(processing_table(), MOLMESH_FIELD(processing));
     t.nest(tetmesh_table(), MOLMESH_FIELD(tetmesh));
     return t;

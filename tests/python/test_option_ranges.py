@@ -63,3 +63,18 @@ def test_docstrings_print_the_ranges():
     for text in ["(0, inf)", "[1, 10]", "[-1e+06, -1e-12]", "[0, 100]"]:
         assert text in molmesh.surface.__doc__, text
     assert "[0, inf)" in molmesh.improve.__doc__
+
+
+def test_hierarchy_and_atom_keywords_say_what_the_cli_says():
+    """One table each (hierarchy_option_specs.hpp, atom_option_specs.hpp): the sentences of
+    `molmesh hierarchy --help` are the docstrings' (the flag and keyword spellings aside)."""
+    from conftest import run_cli
+    cli = " ".join(run_cli("hierarchy", "--help").stdout.split())
+    for sentence in ["Coarsening thresholds T0 (Eq. 6), one level each, finest first, non-decreasing",
+                     "so coarse levels coarsen the far field too, not only the surface",
+                     "Renumber every volume mesh by reverse Cuthill-McKee"]:
+        assert sentence in cli and sentence in molmesh.hierarchy.__doc__, sentence
+    for sentence in ["for PQR input it replaces the file's radii wherever it has an entry",
+                     "Include HETATM records (ligands, ions)",
+                     "Include water molecules (HOH, WAT, ...), which are dropped by default"]:
+        assert sentence in cli and sentence in molmesh.read_atoms.__doc__, sentence

@@ -10,6 +10,7 @@
 #include "molmesh/core/error.hpp"
 #include "molmesh/core/timing.hpp"
 #include "molmesh/hierarchy/build_hierarchy.hpp"
+#include "molmesh/hierarchy/hierarchy_option_specs.hpp"
 #include "molmesh/io/hierarchy_hdf5.hpp"
 #include "molmesh/io/read_atoms.hpp"
 #include "molmesh/io/sha256.hpp"
@@ -19,6 +20,7 @@
 #include "molmesh/pipeline/report_json.hpp"
 #include "molmesh/pipeline/surface_pipeline.hpp"
 #include "option_checks.hpp"
+#include "spec_option.hpp"
 #include "surface_options.hpp"
 #include "volume_options.hpp"
 
@@ -34,7 +36,7 @@ struct HierarchyArgs {
   SurfaceCliOptions surface;
   VolumeCliOptions volume;  // the shared layer (volume_options.hpp), the same on every level
   double size_growth = HierarchyOptions{}.size_growth;
-  bool no_renumber = false;
+  bool renumber = HierarchyOptions{}.renumber;
 };
 
 void run(const HierarchyArgs& args, const CliContext& ctx) {
@@ -52,7 +54,7 @@ void run(const HierarchyArgs& args, const CliContext& ctx) {
   options.tetmesh = volume_options(args.volume, pipeline.blur.max_memory_bytes);
   process_levels_as(options, pipeline, surface.projection);
   options.size_growth = args.size_growth;
-  options.renumber = !args.no_renumber;
+  options.renumber = args.renumber;
 
   HierarchyReport report;
   Hierarchy hierarchy = build_hierarchy(surface.surface, atoms, options, reporter, &report);
@@ -111,24 +113,15 @@ const CommandRegistration registration{
       // --coarsen is the shared layer's name for the same values).
       cmd->remove_option(cmd->get_option("--raw"));
       cmd->remove_option(cmd->get_option("--coarsen"));
-      cmd->add_option(
-             "--t0,--coarsen", args->surface.pipeline.processing.t0,
-             "Coarsening thresholds T0 (Eq. 6), one level each, finest first, non-decreasing")
+      const HierarchyOptionSpecs& specs = kHierarchyOptionSpecs;
+      add_spec_option(*cmd, specs.t0, args->surface.pipeline.processing.t0)
           ->delimiter(',')
-          ->check(finite_in(0, 1e3))
           ->capture_default_str()
           ->type_name("T0[,T0...]");
       add_volume_options(*cmd, args->volume,
                          "; no vertex inside is removed by coarsening on any level");
-      cmd->add_option("--size-growth", args->size_growth,
-                      "Level L grades with --size-factor times this to the power L, so coarse "
-                      "levels coarsen the far field too, not only the surface (1: same far field "
-                      "on every level)")
-          ->check(finite_in(kMinSizeGrowth, kMaxSizeGrowth))
-          ->capture_default_str();
-      cmd->add_flag("--no-renumber", args->no_renumber,
-                    "Keep TetGen's vertex numbering (default: reverse Cuthill-McKee, permutation "
-                    "stored in /levels/<L>/volume/permutation)");
+      add_spec_option(*cmd, specs.size_growth, args->size_growth)->capture_default_str();
+      add_spec_flag(*cmd, specs.renumber, args->renumber);
       cmd->callback([args, &ctx] { run(*args, ctx); });
     }};
 

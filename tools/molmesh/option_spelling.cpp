@@ -1,6 +1,8 @@
 #include "option_spelling.hpp"
 
+#include "molmesh/atoms/atom_option_specs.hpp"
 #include "molmesh/core/error.hpp"
+#include "molmesh/hierarchy/hierarchy_option_specs.hpp"
 #include "molmesh/pipeline/improve_option_specs.hpp"
 #include "molmesh/pipeline/surface_option_specs.hpp"
 #include "molmesh/processing/processing_option_specs.hpp"
@@ -19,14 +21,8 @@ std::string with_cli_flags(std::string_view message) {
   // Library option (its struct member) -> flag; names without a flag stay backquoted.
   static const OptionSpellings kFlags = [] {
     OptionSpellings flags{
-        {"level", "--level"},
-        {"max_levels", "--levels"},
-        {"max_memory_bytes", "--max-memory"},
-        {"radii_file", "--radii"},
-        {"rings", "--rings"},
-        {"size_growth", "--size-growth"},
-        {"spacing", "--spacing"},
-        {"t0", "--t0"},
+        {"level", "--level"}, {"max_levels", "--levels"}, {"max_memory_bytes", "--max-memory"},
+        {"rings", "--rings"}, {"spacing", "--spacing"},   {"t0", "--t0"},
     };
     // The library's option tables; the first flag of a member wins (`t0` is --t0, not
     // surface's --coarsen), and negated flags (--no-flips) are not a member's spelling.
@@ -38,6 +34,8 @@ std::string with_cli_flags(std::string_view message) {
     add(kSurfaceOptionSpecs);
     add(kProcessingOptionSpecs);
     add(kImproveOptionSpecs);
+    add(kAtomOptionSpecs);
+    add(kHierarchyOptionSpecs);
     return flags;
   }();
   return spell_option_names(message, kFlags);

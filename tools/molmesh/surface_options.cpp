@@ -3,6 +3,7 @@
 #include <map>
 #include <string>
 
+#include "molmesh/atoms/atom_option_specs.hpp"
 #include "molmesh/pipeline/surface_option_specs.hpp"
 #include "molmesh/processing/processing_option_specs.hpp"
 #include "option_checks.hpp"
@@ -11,16 +12,14 @@
 namespace molmesh::cli {
 
 void add_atom_options(CLI::App& cmd, AtomReadOptions& options) {
+  const AtomOptionSpecs& specs = kAtomOptionSpecs;
   cmd.add_option_function<std::string>(
-         "--radii", [&options](const std::string& file) { options.radii_file = file; },
-         "Radius table (docs/formats.md) overriding the built-in radii; for PQR input it "
-         "replaces the file's radii wherever it has an entry")
+         cli_names(specs.radii), [&options](const std::string& file) { options.radii_file = file; },
+         cli_help(specs.radii))
       ->check(CLI::ExistingFile)
       ->type_name("FILE");
-  cmd.add_flag("--hetatm,!--no-hetatm", options.include_hetatm,
-               "Include (default) or exclude HETATM records (ligands, ions)");
-  cmd.add_flag("--waters", options.include_waters,
-               "Include water molecules (HOH, WAT, ...), which are dropped by default");
+  add_spec_flag(cmd, specs.hetatm, options.include_hetatm);
+  add_spec_flag(cmd, specs.waters, options.include_waters);
 }
 
 void add_surface_pipeline_options(CLI::App& cmd, SurfacePipelineOptions& options) {

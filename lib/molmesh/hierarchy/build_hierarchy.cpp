@@ -12,8 +12,8 @@
 #include <vector>
 
 #include "molmesh/core/error.hpp"
-#include "molmesh/core/option_spec.hpp"
 #include "molmesh/core/timing.hpp"
+#include "molmesh/hierarchy/hierarchy_option_specs.hpp"
 #include "molmesh/hierarchy/renumber.hpp"
 #include "molmesh/tetmesh/markers.hpp"
 
@@ -34,17 +34,12 @@ void mark_surface(SurfaceMesh& surface, const std::vector<Sphere>& active_site) 
 void HierarchyOptions::validate() const {
   if (t0.empty()) throw Error("hierarchy: give at least one T0 value (`t0`)");
   for (std::size_t i = 0; i < t0.size(); ++i) {
-    if (!(t0[i] >= 0.0)) throw Error("hierarchy: T0 values (`t0`) must be >= 0");
+    check_range(kHierarchyOptionSpecs.t0, t0[i]);
     if (i > 0 && t0[i] < t0[i - 1]) {
       throw Error("hierarchy: T0 values (`t0`) must not decrease (level 0 is the finest)");
     }
   }
-  if (!std::isfinite(size_growth) || size_growth < kMinSizeGrowth || size_growth > kMaxSizeGrowth) {
-    char got[32];
-    std::snprintf(got, sizeof got, "%g", size_growth);
-    throw Error("hierarchy: the size growth per level (`size_growth`) must be a finite number in " +
-                range_text({kMinSizeGrowth, kMaxSizeGrowth, false}) + " (got " + got + ")");
-  }
+  check_range(kHierarchyOptionSpecs.size_growth, size_growth);
 }
 
 Hierarchy build_hierarchy(const SurfaceMesh& surface, const Atoms& atoms,
