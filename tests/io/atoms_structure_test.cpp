@@ -205,6 +205,12 @@ TEST(Structure, MmcifCoordinateThatIsNotANumberNamesItsLine) {
   expect_input_error(
       [&] { read_atoms(write_text("bad.cif", head + "ATOM 4 O O . ALA A 1.2 4.681.0 0 1 0 1\n")); },
       {"bad.cif:23:", "_atom_site.Cartn_y '4.681.0' of atom 4 is not a finite number"});
+  // A loop that does not start its line: counted from the line start, the token found is not
+  // the value, and the message has no line rather than one found by a miscount.
+  std::string shifted = head + "ATOM 4 O O . ALA A 1.2 4.681.0 0 1 0 1\n";
+  shifted.replace(shifted.find("\nloop_"), 6, "\n_cell.length_a 1 loop_");
+  expect_input_error([&] { read_atoms(write_text("shift.cif", shifted)); },
+                     {"shift.cif: _atom_site.Cartn_y '4.681.0' of atom 4"});
   // One atom as tag-value pairs: the line of the tag.
   expect_input_error(
       [] {

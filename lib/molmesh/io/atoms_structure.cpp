@@ -39,8 +39,10 @@ std::optional<std::pair<std::size_t, std::string>> cif_position(std::string_view
 // are space, tab, CR and LF; '#' at a token start comments to the line end; a value is a
 // text field (';' at a line start up to the next line starting with ';'), a quoted string
 // (up to the quote followed by a blank or '#') or a run of non-blanks. gemmi keeps no
-// position per value, and this runs only to word an error: 0 when the text runs out.
-std::size_t cif_token_line(std::string_view text, std::size_t loop_line, std::size_t target) {
+// position per value, and this runs only to word an error: 0 unless the token found there
+// is `value` (so a miscount gives no line rather than a wrong one).
+std::size_t cif_token_line(std::string_view text, std::size_t loop_line, std::size_t target,
+                           std::string_view value) {
   std::size_t pos = 0, line = 1;
   while (line < loop_line && pos < text.size()) {
     if (text[pos] == '\n') ++line;
@@ -56,7 +58,10 @@ std::size_t cif_token_line(std::string_view text, std::size_t loop_line, std::si
     } else if (c == '#') {
       while (pos < text.size() && text[pos] != '\n') ++pos;
     } else if (token++ == target) {
-      return line;
+      const std::size_t end = pos + value.size();
+      const bool same = text.substr(pos, value.size()) == value &&
+                        (end >= text.size() || blank(text[end]) || text[end] == '#');
+      return same ? line : 0;
     } else if (c == ';' && (pos == 0 || text[pos - 1] == '\n')) {
       const std::size_t end = text.find("\n;", pos);
       if (end == std::string_view::npos) return 0;
@@ -95,10 +100,13 @@ void require_finite_coordinates(gemmi::cif::Block& block, std::string_view text,
         const auto& loop = table.loop_item->loop;
         const std::size_t index = static_cast<std::size_t>(row.row_index) * loop.tags.size() +
                                   static_cast<std::size_t>(column);
-        line = cif_token_line(text, static_cast<std::size_t>(table.loop_item->line_number),
-                              1 + loop.tags.size() + index);
-      } else if (column >= 0) {  // single-atom file: tag-value pairs
-        line = static_cast<std::size_t>(block.items[static_cast<std::size_t>(column)].line_number);
+        const int loop_line = table.loop_item->line_number;
+        if (loop_line > 0)
+          line = cif_token_line(text, static_cast<std::size_t>(loop_line),
+                                1 + loop.tags.size() + index, value);
+      } else if (column >= 0) {  // single-atom file: tag-value pairs, the tag's line
+        line = static_cast<std::size_t>(
+            std::max(0, block.items[static_cast<std::size_t>(column)].line_number));
       }
       throw InputError(name, line,
                        std::string("_atom_site.") + axes[k] + " " + io_detail::quoted(value) +
