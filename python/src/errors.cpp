@@ -3,13 +3,8 @@
 #include <exception>
 #include <string>
 
-#include "molmesh/atoms/atom_option_specs.hpp"
 #include "molmesh/core/error.hpp"
-#include "molmesh/hierarchy/hierarchy_option_specs.hpp"
-#include "molmesh/pipeline/improve_option_specs.hpp"
-#include "molmesh/pipeline/surface_option_specs.hpp"
-#include "molmesh/processing/processing_option_specs.hpp"
-#include "molmesh/tetmesh/tetmesh_option_specs.hpp"
+#include "molmesh/pipeline/all_option_specs.hpp"
 
 namespace molmesh::python {
 namespace {
@@ -46,17 +41,9 @@ std::string with_keywords(std::string_view message) {
     };
     // The library's option tables, except surface's `coarsen`: its member `t0` is improve()'s
     // and hierarchy()'s keyword (surface() and tetmesh() respell it: tables.hpp).
-    const auto add = [&keywords](const auto& specs) {
-      for (const OptionSpec* spec : specs.all())
-        if (spec->member != spec->name && spec != &kSurfaceOptionSpecs.coarsen)
-          keywords.emplace(std::string(spec->member), "`" + std::string(spec->name) + "`");
-    };
-    add(kTetMeshOptionSpecs);
-    add(kSurfaceOptionSpecs);
-    add(kProcessingOptionSpecs);
-    add(kImproveOptionSpecs);
-    add(kAtomOptionSpecs);
-    add(kHierarchyOptionSpecs);
+    for (const OptionSpec* spec : all_option_specs())
+      if (spec->member != spec->name && spec != &kSurfaceOptionSpecs.coarsen)
+        keywords.emplace(std::string(spec->member), "`" + std::string(spec->name) + "`");
     return keywords;
   }();
   return spell_option_names(message, kKeywords);

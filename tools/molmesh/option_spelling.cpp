@@ -1,12 +1,7 @@
 #include "option_spelling.hpp"
 
-#include "molmesh/atoms/atom_option_specs.hpp"
 #include "molmesh/core/error.hpp"
-#include "molmesh/hierarchy/hierarchy_option_specs.hpp"
-#include "molmesh/pipeline/improve_option_specs.hpp"
-#include "molmesh/pipeline/surface_option_specs.hpp"
-#include "molmesh/processing/processing_option_specs.hpp"
-#include "molmesh/tetmesh/tetmesh_option_specs.hpp"
+#include "molmesh/pipeline/all_option_specs.hpp"
 
 namespace molmesh::cli {
 
@@ -26,16 +21,8 @@ std::string with_cli_flags(std::string_view message) {
     };
     // The library's option tables; the first flag of a member wins (`t0` is --t0, not
     // surface's --coarsen), and negated flags (--no-flips) are not a member's spelling.
-    const auto add = [&flags](const auto& specs) {
-      for (const OptionSpec* spec : specs.all())
-        if (spec->cli_names.empty()) flags.emplace(std::string(spec->member), cli_flag(spec->name));
-    };
-    add(kTetMeshOptionSpecs);
-    add(kSurfaceOptionSpecs);
-    add(kProcessingOptionSpecs);
-    add(kImproveOptionSpecs);
-    add(kAtomOptionSpecs);
-    add(kHierarchyOptionSpecs);
+    for (const OptionSpec* spec : all_option_specs())
+      if (spec->cli_names.empty()) flags.emplace(std::string(spec->member), cli_flag(spec->name));
     return flags;
   }();
   return spell_option_names(message, kFlags);
