@@ -1,6 +1,7 @@
-// HierarchyOptions::validate(): the T0 list and the size growth per level are checked by the
-// library, whichever front end set them, naming the struct member (core/error.hpp); the
-// CLI's parse-time check of --size-growth uses the same bounds.
+// HierarchyOptions::validate(): the T0 list, the size growth per level and the processing and
+// volume options of every level are checked by the library, whichever front end set them,
+// naming the struct member (core/error.hpp); the CLI's parse-time check of --size-growth
+// uses the same bounds.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -49,6 +50,20 @@ TEST(HierarchyOptions, T0MustBeGivenNonNegativeAndNonDecreasing) {
   EXPECT_NE(message_of(options).find("must not decrease"), std::string::npos);
   options.t0 = {0.2, 0.2, 0.5};
   EXPECT_EQ(message_of(options), "");
+}
+
+// A processing or volume option out of range is refused by validate() itself, so
+// build_hierarchy() stops before level 0's surface is processed, not when a level reaches it.
+TEST(HierarchyOptions, ProcessingAndVolumeOptionsAreCheckedUpFront) {
+  HierarchyOptions options;
+  options.processing.rings = 0;
+  EXPECT_NE(message_of(options).find("`rings`"), std::string::npos) << message_of(options);
+  options.processing.rings = 2;
+  options.processing.t0 = {-1.0};  // replaced by each level's own T0: not an error
+  EXPECT_EQ(message_of(options), "");
+  options.tetmesh.min_dihedral_deg = kMaxMinDihedralDeg + 1.0;
+  EXPECT_NE(message_of(options).find("`min_dihedral_deg`"), std::string::npos)
+      << message_of(options);
 }
 
 }  // namespace

@@ -40,6 +40,13 @@ void HierarchyOptions::validate() const {
     }
   }
   check_range(kHierarchyOptionSpecs.size_growth, size_growth);
+  // Every level's processing and volume options, before level 0's surface is processed
+  // (a bad value would otherwise surface only when the first level reaches it). Each level
+  // replaces processing.t0 by its own T0, checked above.
+  ProcessingOptions level_processing = processing;
+  level_processing.t0 = {t0.front()};
+  level_processing.validate();
+  tetmesh.validate();
 }
 
 Hierarchy build_hierarchy(const SurfaceMesh& surface, const Atoms& atoms,

@@ -38,7 +38,8 @@ struct HierarchyOptions {
 
   // Throws Error naming the option (`t0`, `size_growth`) when the T0 list is empty,
   // negative or decreasing, or size_growth is not a finite number in [kMinSizeGrowth,
-  // kMaxSizeGrowth]; build_hierarchy() calls it first (tetmesh's own on every level).
+  // kMaxSizeGrowth], and what processing.validate() and tetmesh.validate() throw;
+  // build_hierarchy() calls it first, before any level is built.
   void validate() const;
 };
 

@@ -65,21 +65,18 @@ struct Scratch {
   std::vector<Triangle> local;  // chosen triangles in ring indices
 };
 
-// Chooses how to fill the hole left by deleting v, or returns false if no safe filling
-// exists. Read-only on the mesh. The triangulation maximises the smallest angle (ties: the
-// larger sum of minimum angles) over all triangulations of the ring polygon whose
-// triangles are (1) not degenerate, (2) positively oriented when projected on the fan's
-// tangent plane and tilted by at most 60° from it (no fold-over), (3) free of edges that
-// already exist elsewhere, and (4) leave every ring vertex at least 3 neighbours. The
-// chosen triangles must then not cross any face of the surrounding ring of faces, nor
-// fold onto their outer neighbours.
-bool plan_removal(const HalfedgeMesh& mesh, int v, Scratch& s, std::vector<Triangle>& out) {
-  out.clear();
-  mesh.one_ring(v, s.ring);
-  mesh.incident_faces(v, s.fan);
-  const int k = static_cast<int>(s.ring.size());
-  if (k < 3 || k > kMaxHoleValence) return false;
+// The hole's polygon seen along the removed fan's mean normal.
+struct HolePlane {
+  Vec3 normal;
+  Vec3 x;            // the vertex being removed
+  double scale = 0;  // largest squared distance from x to a ring vertex
+  double hole_radius = 0;
+};
 
+// Fills s.p3 and s.p2 (ring positions, and their projections on the tangent plane) and
+// `plane`; false when the fan has no normal or the ring is not star-shaped around x.
+bool project_ring(const HalfedgeMesh& mesh, int v, Scratch& s, HolePlane& plane) {
+  const int k = static_cast<int>(s.ring.size());
   Vec3 normal = Vec3::Zero();
   for (int f : s.fan) normal += mesh.face_area_vector(f);
   const double normal_len = normal.norm();
@@ -109,7 +106,13 @@ bool plan_removal(const HalfedgeMesh& mesh, int v, Scratch& s, std::vector<Trian
   }
   if (std::abs(winding - 2 * std::numbers::pi) > 1e-6) return false;
   const double hole_radius = std::sqrt(scale);
+  plane = {normal, x, scale, hole_radius};
+  return true;
+}
 
+// s.valence: each ring vertex's valence; s.edge: which ring vertices are already adjacent.
+void record_ring_edges(const HalfedgeMesh& mesh, Scratch& s) {
+  const int k = static_cast<int>(s.ring.size());
   s.valence.resize(k);
   s.edge.assign(static_cast<std::size_t>(k * k), 0);
   for (int i = 0; i < k; ++i) {
@@ -127,6 +130,16 @@ bool plan_removal(const HalfedgeMesh& mesh, int v, Scratch& s, std::vector<Trian
     } while (h != h0);
     s.valence[i] = count;
   }
+}
+
+// The max-min triangulation of the ring polygon (plan_removal's conditions 1-4) into out, in
+// mesh vertices; false when none exists.
+bool triangulate_hole(const HolePlane& plane, Scratch& s, std::vector<Triangle>& out) {
+  const int k = static_cast<int>(s.ring.size());
+  const Vec3& normal = plane.normal;
+  const Vec3& x = plane.x;
+  const double scale = plane.scale;
+  const double hole_radius = plane.hole_radius;
   auto is_polygon_side = [&](int a, int b) { return b - a == 1 || (a == 0 && b == k - 1); };
   auto score = [&](int i, int m, int j) {
     // Diagonals must be new edges.
@@ -211,8 +224,12 @@ bool plan_removal(const HalfedgeMesh& mesh, int v, Scratch& s, std::vector<Trian
     s.around.push_back(j);
   }
   for (const Triangle& t : s.local) out.push_back({s.ring[t[0]], s.ring[t[1]], s.ring[t[2]]});
+  return true;
+}
 
-  // Faces around the hole: every face at a ring vertex that is not in the fan of v.
+// Whether the new triangles `out` cross no face of the ring of faces around the hole and do
+// not fold onto their outer neighbours.
+bool filling_fits(const HalfedgeMesh& mesh, Scratch& s, const std::vector<Triangle>& out) {
   s.around.clear();
   for (int r : s.ring) {
     const int h0 = mesh.outgoing(r);
@@ -265,6 +282,27 @@ bool plan_removal(const HalfedgeMesh& mesh, int v, Scratch& s, std::vector<Trian
     }
   }
   return true;
+}
+
+// Chooses how to fill the hole left by deleting v, or returns false if no safe filling
+// exists. Read-only on the mesh. The triangulation maximises the smallest angle (ties: the
+// larger sum of minimum angles) over all triangulations of the ring polygon whose
+// triangles are (1) not degenerate, (2) positively oriented when projected on the fan's
+// tangent plane and tilted by at most 60° from it (no fold-over), (3) free of edges that
+// already exist elsewhere, and (4) leave every ring vertex at least 3 neighbours. The
+// chosen triangles must then not cross any face of the surrounding ring of faces, nor
+// fold onto their outer neighbours.
+bool plan_removal(const HalfedgeMesh& mesh, int v, Scratch& s, std::vector<Triangle>& out) {
+  out.clear();
+  mesh.one_ring(v, s.ring);
+  mesh.incident_faces(v, s.fan);
+  const int k = static_cast<int>(s.ring.size());
+  if (k < 3 || k > kMaxHoleValence) return false;
+  HolePlane plane;
+  if (!project_ring(mesh, v, s, plane)) return false;
+  record_ring_edges(mesh, s);
+  if (!triangulate_hole(plane, s, out)) return false;
+  return filling_fits(mesh, s, out);
 }
 
 }  // namespace
