@@ -14,6 +14,8 @@ namespace molmesh {
 
 // Moves the vertices of crossing triangles of `mesh` halfway back to their positions in
 // `input` (provenance[v] = input vertex of v), then all the way, for a bounded number of
+// rounds; crossings left then are folds of the coarser connectivity, and the vertices of
+// the crossing triangles move to the mean of their neighbours, again for a bounded number of
 // rounds. Returns the number of crossing triangle pairs left (0: untangled).
 std::size_t untangle(SurfaceMesh& mesh, const SurfaceMesh& input,
                      const std::vector<int>& provenance);
