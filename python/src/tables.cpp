@@ -88,10 +88,10 @@ const OptionTable<SurfacePipelineOptions>& volume_table() {
     t.field(key(specs.isovalue), MOLMESH_FIELD(isovalue),
             doc_of(specs.isovalue) + " for atoms; a Volume's level may be any finite number");
     t.field(key(specs.truncation), MOLMESH_FIELD(blur.truncation), doc_of(specs.truncation));
-    t.choice(key(specs.blur), MOLMESH_FIELD(blur_method),
-             std::vector<std::pair<std::string, BlurMethod>>{{"exact", BlurMethod::kExact},
-                                                             {"fast", BlurMethod::kFast}},
-             doc_of(specs.blur));
+    std::vector<std::pair<std::string, BlurMethod>> blur_methods;
+    for (BlurMethod method : kBlurMethods)
+      blur_methods.emplace_back(blur_method_name(method), method);
+    t.choice(key(specs.blur), MOLMESH_FIELD(blur_method), blur_methods, doc_of(specs.blur));
     t.field(key(specs.min_cavity_volume), MOLMESH_FIELD(min_cavity_volume),
             doc_of(specs.min_cavity_volume));
     return t;

@@ -14,7 +14,9 @@
 #include <vector>
 
 #include "cli_context.hpp"
+#include "help_formatter.hpp"
 #include "molmesh/core/error.hpp"
+#include "molmesh/core/version.hpp"
 #include "option_spelling.hpp"
 #include "solve_command.hpp"
 #include "solvers/petsc/petsc_engine.hpp"
@@ -45,7 +47,8 @@ int main(int argc, char** argv) {
   CLI::App app{
       "molmesh-petsc: molmesh's solvers on PETSc (KSPCG + PCMG on the hierarchy's levels) under "
       "MPI; PETSc options after --"};
-  app.set_version_flag("--version", "molmesh-petsc 0.1.0");
+  use_help_formatter(app);
+  app.set_version_flag("--version", std::string("molmesh-petsc ") + molmesh::version());
   app.fallthrough();
   app.require_subcommand(1);
   CliContext ctx;

@@ -7,6 +7,7 @@
 
 #include "cli_context.hpp"
 #include "command_registry.hpp"
+#include "help_formatter.hpp"
 #include "molmesh/core/atomic_file.hpp"
 #include "molmesh/core/error.hpp"
 #include "molmesh/core/version.hpp"
@@ -17,6 +18,7 @@ int main(int argc, char** argv) {
   // Ctrl-C / SIGTERM delete the temporaries of outputs being written (docs/cli.md).
   molmesh::install_interrupt_cleanup();
   CLI::App app{"molmesh: molecules to adaptive surface and tetrahedral meshes (GAMer method)"};
+  use_help_formatter(app);
   app.require_subcommand(1);
   app.set_version_flag("--version", std::string("molmesh ") + molmesh::version());
   app.fallthrough();  // lets --quiet appear after the subcommand too

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "help_formatter.hpp"
 #include "molmesh/core/atomic_file.hpp"
 #include "molmesh/core/error.hpp"
 #include "molmesh/core/timing.hpp"
@@ -67,10 +68,10 @@ void add_common(CLI::App* cmd, CommonArgs& a) {
                   "Use at most this many multigrid levels, counting the solve level (0 = all)")
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
-  cmd->add_option("--preconditioner", a.preconditioner,
-                  "multigrid (V-cycle over the hierarchy, see --coarse-operators) or ic "
-                  "(incomplete Cholesky, the baseline)")
-      ->check(CLI::IsMember({"multigrid", "ic"}))
+  one_of(cmd->add_option("--preconditioner", a.preconditioner,
+                         "multigrid (V-cycle over the hierarchy, see --coarse-operators) or ic "
+                         "(incomplete Cholesky, the baseline)"),
+         {"multigrid", "ic"})
       ->capture_default_str();
   cmd->add_option("--tolerance", a.tolerance, "CG stops at this relative residual ||b-Ax||/||b||")
       ->check(CLI::PositiveNumber)
@@ -87,11 +88,12 @@ void add_common(CLI::App* cmd, CommonArgs& a) {
                   "results depend on it, not on the thread count; 1 = sequential")
       ->check(CLI::Range(1, 256))
       ->capture_default_str();
-  cmd->add_option("--coarse-operators", a.coarse_operators,
-                  "Multigrid coarse operators: mesh (discretised on each coarse mesh; fast) or "
-                  "galerkin (P^T A P: the exact projection, but on a non-nested hierarchy its "
-                  "stencil widens level by level and the setup becomes slower than the solve)")
-      ->check(CLI::IsMember({"galerkin", "mesh"}))
+  one_of(cmd->add_option("--coarse-operators", a.coarse_operators,
+                         "Multigrid coarse operators: mesh (discretised on each coarse mesh; "
+                         "fast) or galerkin (P^T A P: the exact projection, but on a non-nested "
+                         "hierarchy its stencil widens level by level and the setup becomes "
+                         "slower than the solve)"),
+         {"mesh", "galerkin"})
       ->capture_default_str();
   cmd->add_option("--json", a.json,
                   "Write the results (and solver report with residual history) as JSON");
@@ -235,10 +237,10 @@ void add_solve_subcommands(CLI::App* cmd, CliContext& ctx,
   s->add_option("--diffusion", smol->diffusion, "Relative diffusion coefficient D (cm^2/s)")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
-  s->add_option("--absorbing", smol->absorbing,
-                "Absorbing boundary: surface (the whole molecular surface) or active-site (faces "
-                "marked 3 by --active-site at meshing time; the rest reflects)")
-      ->check(CLI::IsMember({"surface", "active-site"}))
+  one_of(s->add_option("--absorbing", smol->absorbing,
+                       "Absorbing boundary: surface (the whole molecular surface) or active-site "
+                       "(faces marked 3 by --active-site at meshing time; the rest reflects)"),
+         {"surface", "active-site"})
       ->capture_default_str();
   s->add_option("--potential", smol->potential,
                 "Electrostatic potential phi in kT/e (APBS OpenDX .dx, or .mrc), trilinearly "

@@ -27,12 +27,14 @@ void add_surface_pipeline_options(CLI::App& cmd, SurfacePipelineOptions& options
   const ProcessingOptionSpecs& processing = kProcessingOptionSpecs;
   add_spec_option(cmd, specs.surface, options.surface)
       ->transform(CLI::CheckedTransformer(
-          [] {
-            std::map<std::string, SurfaceKind> names;
-            for (SurfaceKind kind : kSurfaceKinds) names[surface_kind_name(kind)] = kind;
-            return names;
-          }(),
-          CLI::ignore_case))
+                      [] {
+                        std::map<std::string, SurfaceKind> names;
+                        for (SurfaceKind kind : kSurfaceKinds)
+                          names[surface_kind_name(kind)] = kind;
+                        return names;
+                      }(),
+                      CLI::ignore_case)
+                      .description(""))  // the choices are the type name
       ->default_str(surface_kind_name(options.surface))
       ->type_name("ses|sas|vdw|gaussian");
   add_spec_option(cmd, specs.probe_radius, options.probe_radius)
@@ -60,11 +62,16 @@ void add_surface_pipeline_options(CLI::App& cmd, SurfacePipelineOptions& options
   add_max_memory_option(cmd, options.blur.max_memory_bytes);
   add_spec_flag(cmd, specs.raw, options.raw);
   add_spec_option(cmd, specs.blur, options.blur_method)
-      ->transform(
-          CLI::CheckedTransformer(std::map<std::string, BlurMethod>{{"exact", BlurMethod::kExact},
-                                                                    {"fast", BlurMethod::kFast}},
-                                  CLI::ignore_case))
-      ->capture_default_str()
+      ->transform(CLI::CheckedTransformer(
+                      [] {
+                        std::map<std::string, BlurMethod> names;
+                        for (BlurMethod method : kBlurMethods)
+                          names[blur_method_name(method)] = method;
+                        return names;
+                      }(),
+                      CLI::ignore_case)
+                      .description(""))  // the choices are the type name
+      ->default_str(blur_method_name(options.blur_method))
       ->type_name("exact|fast");
   add_spec_option(cmd, specs.coarsen, options.processing.t0)
       ->delimiter(',')

@@ -3,6 +3,7 @@
 #include <string>
 #include <vector>
 
+#include "help_formatter.hpp"
 #include "molmesh/io/sphere_list.hpp"
 #include "molmesh/tetmesh/tetmesh_option_specs.hpp"
 #include "spec_option.hpp"
@@ -11,12 +12,12 @@ namespace molmesh::cli {
 void add_volume_options(CLI::App& cmd, VolumeCliOptions& options,
                         const std::string& active_site_help) {
   const TetMeshOptionSpecs& specs = kTetMeshOptionSpecs;
-  add_spec_option(cmd, specs.domain, options.domain)
-      ->check(CLI::IsMember([] {
-        std::vector<std::string> names;
-        for (Domain d : kDomains) names.push_back(domain_name(d));
-        return names;
-      }()))
+  one_of(add_spec_option(cmd, specs.domain, options.domain),
+         [] {
+           std::vector<std::string> names;
+           for (Domain d : kDomains) names.push_back(domain_name(d));
+           return names;
+         }())
       ->capture_default_str();
   add_spec_option(cmd, specs.sphere_ratio, options.tet.sphere_ratio)->capture_default_str();
   add_spec_option(cmd, specs.outer_radius, options.outer_radius)->type_name("R");

@@ -41,7 +41,7 @@ std::map<std::string, std::string> hierarchy_parameters(
     p["blobbyness"] = text(s.blur.blobbyness);
     p["isovalue"] = text(s.isovalue);
     p["level"] = text(level_of(s));
-    p["blur"] = s.blur_method == BlurMethod::kFast ? "fast" : "exact";
+    p["blur"] = blur_method_name(s.blur_method);
     p["min_cavity_volume"] = text(s.min_cavity_volume);
     p["keep_spheres"] = s.keep_spheres_file;
     if (source->atoms) {

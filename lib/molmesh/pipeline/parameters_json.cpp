@@ -13,7 +13,7 @@ nlohmann::json surface_parameters_json(const SurfaceSource& source) {
   j["isovalue"] = s.isovalue;
   j["kernel_truncation"] = s.blur.truncation;
   j["min_cavity_volume"] = s.min_cavity_volume;
-  j["blur"] = s.blur_method == BlurMethod::kFast ? "fast" : "exact";
+  j["blur"] = blur_method_name(s.blur_method);
   j["raw"] = s.raw;
   j["coarsen"] = s.processing.t0;
   j["rings"] = s.processing.rings;

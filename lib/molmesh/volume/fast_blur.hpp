@@ -5,6 +5,8 @@
 // is one Gaussian convolution of the atom weights, so the atoms are splatted onto the grid
 // and the grid is filtered by the separable recursive Gaussian (recursive_gaussian.hpp) at a
 // cost independent of the number of atoms and of sigma. docs/inputs.md has the measurements.
+#include <array>
+
 #include "molmesh/atoms/atom.hpp"
 #include "molmesh/core/reporter.hpp"
 #include "molmesh/volume/gaussian_blur.hpp"
@@ -16,6 +18,14 @@ namespace molmesh {
 // How the pipeline evaluates the blurred volume: Eq. 1 summed atom by atom (blur_atoms), or
 // Eq. 2 by splatting and recursive filtering (fast_blur).
 enum class BlurMethod { kExact, kFast };
+
+// Every method, for the front ends that spell them (CLI --blur, Python blur=).
+inline constexpr std::array<BlurMethod, 2> kBlurMethods{BlurMethod::kExact, BlurMethod::kFast};
+
+// "exact", "fast": the spelling of --blur, Python's blur= and the parameters JSON.
+inline const char* blur_method_name(BlurMethod method) {
+  return method == BlurMethod::kFast ? "fast" : "exact";
+}
 
 enum class SplatMethod {
   kTrilinear,  // weight shared among the 8 surrounding nodes (sub-voxel position kept)
