@@ -81,6 +81,34 @@ TEST(HierarchyHdf5, RoundTripIsExact) {
   }
 }
 
+TEST(HierarchyHdf5, SeveralPointFieldsAreStoredAllOrNone) {
+  const auto dir = testing::test_dir("fields-many");
+  const auto h = synthetic_hierarchy();
+  write_hierarchy(dir / "h.h5", h);
+  const std::size_t n = h.levels[0].volume.points.size();
+  std::vector<double> x(n), y(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    x[i] = h.levels[0].volume.points[i].x();
+    y[i] = -2.0 * static_cast<double>(i);
+  }
+  const std::vector<PointField> both{{"x", x}, {"y", y}};
+  write_point_fields(dir / "h.h5", 0, both);
+  EXPECT_EQ(read_point_field(dir / "h.h5", 0, "x"), x);
+  EXPECT_EQ(read_point_field(dir / "h.h5", 0, "y"), y);
+  EXPECT_EQ(point_field_names(dir / "h.h5", 0), (std::vector<std::string>{"x", "y"}));
+
+  // A wrong length or name in the second field stores neither, not even the first.
+  const std::vector<double> short_field(3);
+  const std::vector<PointField> bad_length{{"z", x}, {"w", short_field}};
+  EXPECT_THROW(write_point_fields(dir / "h.h5", 0, bad_length), Error);
+  const std::vector<PointField> bad_name{{"z", x}, {"a/b", y}};
+  EXPECT_THROW(write_point_fields(dir / "h.h5", 0, bad_name), Error);
+  EXPECT_EQ(point_field_names(dir / "h.h5", 0), (std::vector<std::string>{"x", "y"}));
+  const std::string text = testing::slurp(dir / "h_L0_volume.xdmf");
+  EXPECT_NE(text.find("/levels/0/volume/fields/y"), std::string::npos);
+  EXPECT_EQ(text.find("/levels/0/volume/fields/z"), std::string::npos);
+}
+
 TEST(HierarchyHdf5, PointFieldsAreStoredAndShownInXdmf) {
   const auto dir = testing::test_dir("fields");
   const auto h = synthetic_hierarchy();

@@ -10,15 +10,16 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
 #include "help_formatter.hpp"
-#include "molmesh/core/atomic_file.hpp"
 #include "molmesh/core/error.hpp"
 #include "molmesh/core/timing.hpp"
 #include "molmesh/io/hierarchy_hdf5.hpp"
 #include "molmesh/io/read_atoms.hpp"
+#include "molmesh/io/stats_json.hpp"
 #include "molmesh/io/volume_io.hpp"
 #include "solvers/physics/hierarchy_solve.hpp"
 #include "solvers/physics/result_json.hpp"
@@ -131,14 +132,18 @@ void add_problem_json(nlohmann::json& j, const char* problem, const CommonArgs& 
   j["unknowns"] = unknowns;
 }
 
-void write_json(const std::string& path, const nlohmann::json& j) {
-  if (path.empty()) return;
-  write_file_atomically(path, [&](std::ostream& out) { out << j.dump(2) << '\n'; });
+// Both fields of a solve go in with one rewrite of the hierarchy file, or neither does.
+void store_fields(const CommonArgs& a, const std::vector<PointField>& fields) {
+  if (a.no_fields) return;
+  write_point_fields(a.hierarchy, a.level, fields);
 }
 
-void store_field(const CommonArgs& a, const std::string& name, const Eigen::VectorXd& v) {
-  if (a.no_fields) return;
-  write_point_field(a.hierarchy, a.level, name, std::span<const double>(v.data(), v.size()));
+std::span<const double> values_of(const Eigen::VectorXd& v) {
+  return {v.data(), static_cast<std::size_t>(v.size())};
+}
+
+void write_json(const std::string& path, const nlohmann::json& j) {
+  if (!path.empty()) write_json_file(path, j);
 }
 
 void run_smoluchowski(const SmoluchowskiArgs& args, const CliContext& ctx,
@@ -162,12 +167,9 @@ void run_smoluchowski(const SmoluchowskiArgs& args, const CliContext& ctx,
   const auto& result = solved.result;
   if (!engine.writes_output) return;
   const TetMesh& mesh = hierarchy.levels[static_cast<std::size_t>(args.common.level)].volume;
-  store_field(args.common, "concentration", result.concentration);
-  if (!solved.beta_w.empty()) {
-    store_field(args.common, "beta_W",
-                Eigen::Map<const Eigen::VectorXd>(solved.beta_w.data(),
-                                                  static_cast<Eigen::Index>(solved.beta_w.size())));
-  }
+  std::vector<PointField> fields{{"concentration", values_of(result.concentration)}};
+  if (!solved.beta_w.empty()) fields.push_back({"beta_W", solved.beta_w});
+  store_fields(args.common, fields);
   nlohmann::json j = solvers::to_json(solved);
   add_problem_json(j, "steady-state Smoluchowski", args.common, engine, mesh, result.unknowns);
   j["absorbing"] = args.absorbing;
@@ -198,8 +200,9 @@ void run_poisson(const PoissonArgs& args, const CliContext& ctx, const SolveEngi
                                                       atoms, options, reporter);
   if (!engine.writes_output) return;
   const TetMesh& mesh = hierarchy.levels[static_cast<std::size_t>(args.common.level)].volume;
-  store_field(args.common, "potential_kJ_per_mol_e", result.potential);
-  store_field(args.common, "reaction_potential_kJ_per_mol_e", result.reaction_potential);
+  store_fields(args.common,
+               {{"potential_kJ_per_mol_e", values_of(result.potential)},
+                {"reaction_potential_kJ_per_mol_e", values_of(result.reaction_potential)}});
   nlohmann::json j = solvers::to_json(result);
   add_problem_json(j, "Poisson solvation energy (reference-solve method)", args.common, engine,
                    mesh, result.unknowns);

@@ -27,9 +27,10 @@ void validate_field_name(const std::string& name) {
 
 }  // namespace
 
-void write_point_field(const std::filesystem::path& h5, int level, const std::string& name,
-                       std::span<const double> values) {
-  validate_field_name(name);
+void write_point_fields(const std::filesystem::path& h5, int level,
+                        std::span<const PointField> fields) {
+  if (fields.empty()) return;
+  for (const PointField& field : fields) validate_field_name(field.name);
   {
     auto [file, levels] = open_hierarchy(h5, H5F_ACC_RDONLY);
     if (level < 0 || level >= levels) {
@@ -42,22 +43,28 @@ void write_point_field(const std::filesystem::path& h5, int level, const std::st
     } catch (const H5Failure& e) {
       throw InputError(h5.string(), e.what());
     }
-    if (points != values.size()) {
-      throw Error("point field \"" + name + "\" has " + std::to_string(values.size()) +
-                  " values but level " + std::to_string(level) + " has " + std::to_string(points) +
-                  " volume vertices");
+    // Every field is checked before the file is touched, so a bad one stores none.
+    for (const PointField& field : fields) {
+      if (points != field.values.size()) {
+        throw Error("point field \"" + field.name + "\" has " +
+                    std::to_string(field.values.size()) + " values but level " +
+                    std::to_string(level) + " has " + std::to_string(points) + " volume vertices");
+      }
     }
   }
   std::vector<char> image;
   try {
-    // The whole file is read into memory, edited there and written back atomically.
+    // The whole file is read into memory, edited there and written back atomically, once
+    // for all the fields.
     Handle fapl = in_memory_access();
     Handle file(H5Fopen(h5.c_str(), H5F_ACC_RDWR, fapl.get()), H5Fclose, "cannot open for writing");
-    const auto dataset = field_path(level, name);
-    if (link_exists(file.get(), dataset)) {
-      check(H5Ldelete(file.get(), dataset.c_str(), H5P_DEFAULT), "cannot replace " + dataset);
+    for (const PointField& field : fields) {
+      const auto dataset = field_path(level, field.name);
+      if (link_exists(file.get(), dataset)) {
+        check(H5Ldelete(file.get(), dataset.c_str(), H5P_DEFAULT), "cannot replace " + dataset);
+      }
+      write_dataset(file.get(), dataset, field.values.data(), field.values.size(), 0);
     }
-    write_dataset(file.get(), dataset, values.data(), values.size(), 0);
     image = file_image(file.get());
   } catch (const H5Failure& e) {
     throw OutputError(h5.string() + ": HDF5: " + e.what());
@@ -68,6 +75,12 @@ void write_point_field(const std::filesystem::path& h5, int level, const std::st
   } catch (const H5Failure& e) {
     throw OutputError(h5.string() + ": XDMF sidecars: " + e.what());
   }
+}
+
+void write_point_field(const std::filesystem::path& h5, int level, const std::string& name,
+                       std::span<const double> values) {
+  const PointField field{name, values};
+  write_point_fields(h5, level, std::span<const PointField>(&field, 1));
 }
 
 std::vector<double> read_point_field(const std::filesystem::path& h5, int level,
