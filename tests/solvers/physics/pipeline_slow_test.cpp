@@ -73,8 +73,8 @@ TEST(SolverPipeline, BornIonWithinOnePercentAtTheDefaults) {
                          " --json " + (dir / "born_defaults.json").string(),
                      dir / "born_defaults.json");
   const double dg = j["solvation_energy_kJ_per_mol"].get<double>();
-  std::printf("Born dG = %.3f kJ/mol (%+.2f %%), %d iterations\n", dg,
-              100.0 * (dg / -228.61 - 1.0), j["iterations"].get<int>());
+  std::printf("Born dG = %.3f kJ/mol (%+.2f %%), %d iterations\n", dg, 100.0 * (dg / -228.61 - 1.0),
+              j["iterations"].get<int>());
   // Measured +0.55 % (-3.4 % before the size field).
   EXPECT_NEAR(dg / -228.61, 1.0, 0.01);
   EXPECT_LE(j["iterations"].get<int>(), 30);  // 22 (20 before)

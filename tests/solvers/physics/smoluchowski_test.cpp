@@ -8,8 +8,8 @@
 #include <numbers>
 
 #include "molmesh/core/error.hpp"
-#include "shell_mesh.hpp"
 #include "solvers/physics/units.hpp"
+#include "solvers/shell_mesh.hpp"
 
 namespace molmesh::solvers {
 namespace {

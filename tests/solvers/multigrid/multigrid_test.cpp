@@ -3,8 +3,8 @@
 #include <gtest/gtest.h>
 
 #include "molmesh/core/error.hpp"
-#include "shell_mesh.hpp"
 #include "solvers/physics/smoluchowski.hpp"
+#include "solvers/shell_mesh.hpp"
 
 namespace molmesh::solvers {
 namespace {

@@ -9,9 +9,9 @@
 #include <random>
 
 #include "molmesh/core/error.hpp"
-#include "shell_mesh.hpp"
 #include "solvers/fem/dirichlet.hpp"
 #include "solvers/fem/p1_assembly.hpp"
+#include "solvers/shell_mesh.hpp"
 
 namespace molmesh::solvers {
 namespace {
