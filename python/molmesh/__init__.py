@@ -44,6 +44,7 @@ from ._core import (
     tetmesh,
     thread_limit,
     write_point_field,
+    write_point_fields,
 )
 from . import _core
 from ._meshio import surface_to_meshio as _surface_to_meshio

@@ -249,6 +249,25 @@ void bind_hierarchy(py::module_& m) {
       "Stores one value per volume vertex of `level` in the hierarchy file (ParaView shows it "
       "through the XDMF sidecar).");
   m.def(
+      "write_point_fields",
+      [](const std::filesystem::path& path, int level, const py::dict& fields) {
+        // Copied out of numpy first, so the file is rewritten without the GIL, once.
+        std::vector<std::string> names;
+        std::vector<std::vector<double>> values;
+        for (const auto& [key, value] : fields) {
+          names.push_back(py::cast<std::string>(key));
+          values.push_back(
+              to_doubles(py::reinterpret_borrow<py::object>(value), names.back().c_str()));
+        }
+        std::vector<PointField> list;
+        for (std::size_t i = 0; i < names.size(); ++i) list.push_back({names[i], values[i]});
+        py::gil_scoped_release release;
+        write_point_fields(path, level, list);
+      },
+      py::arg("path"), py::arg("level"), py::arg("fields"),
+      "Stores several fields {name: values} of `level` with one rewrite of the file: all of "
+      "them or, when any has a bad name or length, none.");
+  m.def(
       "read_point_field",
       [](const std::filesystem::path& path, int level, const std::string& name) {
         std::vector<double> v;

@@ -119,6 +119,13 @@ def test_write_and_read_back(tmp_path, built):
     molmesh.write_point_field(tmp_path / "mine.h5", 0, "index", field)
     assert molmesh.point_field_names(tmp_path / "mine.h5", 0) == ["index"]
     np.testing.assert_array_equal(molmesh.read_point_field(tmp_path / "mine.h5", 0, "index"), field)
+    # Several at once: all or none.
+    molmesh.write_point_fields(tmp_path / "mine.h5", 0, {"twice": 2 * field, "neg": -field})
+    assert molmesh.point_field_names(tmp_path / "mine.h5", 0) == ["index", "neg", "twice"]
+    np.testing.assert_array_equal(molmesh.read_point_field(tmp_path / "mine.h5", 0, "neg"), -field)
+    with pytest.raises(molmesh.Error):
+        molmesh.write_point_fields(tmp_path / "mine.h5", 0, {"ok": field, "short": field[:3]})
+    assert "ok" not in molmesh.point_field_names(tmp_path / "mine.h5", 0)
     meshio = pytest.importorskip("meshio")
     m = meshio.read(tmp_path / "mine_L0_volume.xdmf")
     assert len(m.points) == len(field)
