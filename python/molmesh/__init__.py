@@ -21,6 +21,7 @@ from ._core import (
     HierarchyLevel,
     SolveResult,
     InputError,
+    OptionError,
     OutputError,
     Surface,
     TetMesh,

@@ -16,6 +16,7 @@ namespace py = pybind11;
 PyObject* g_error = nullptr;
 PyObject* g_input_error = nullptr;
 PyObject* g_output_error = nullptr;
+PyObject* g_option_error = nullptr;
 PyObject* g_warning = nullptr;
 
 PyObject* new_type(py::module_& m, const char* name, py::tuple bases, const char* doc) {
@@ -55,7 +56,7 @@ void bind_errors(py::module_& m) {
   py::handle exception(PyExc_Exception);
   g_error = new_type(m, "Error", py::make_tuple(exception),
                      "A molmesh request cannot be carried out (bad option value, impossible "
-                     "geometry, a stage failed). Base of InputError and OutputError.");
+                     "geometry, a stage failed). Base of InputError, OutputError and OptionError.");
   py::handle error(g_error);
   g_input_error =
       new_type(m, "InputError", py::make_tuple(error, py::handle(PyExc_ValueError)),
@@ -64,6 +65,10 @@ void bind_errors(py::module_& m) {
                "not on one line).");
   g_output_error = new_type(m, "OutputError", py::make_tuple(error, py::handle(PyExc_OSError)),
                             "An output file could not be written; the target is left untouched.");
+  g_option_error =
+      new_type(m, "OptionError", py::make_tuple(error, py::handle(PyExc_ValueError)),
+               "An option's value is outside its range or what the input allows (the message "
+               "names the keyword).");
   g_warning = new_type(m, "Warning", py::make_tuple(py::handle(PyExc_UserWarning)),
                        "A warning from the library (zero radii, repaired input, ...).");
 
@@ -78,6 +83,8 @@ void bind_errors(py::module_& m) {
       PyErr_SetObject(g_input_error, instance.ptr());
     } catch (const OutputError& e) {
       raise(g_output_error, with_keywords(e.what()).c_str());
+    } catch (const OptionError& e) {
+      raise(g_option_error, with_keywords(e.what()).c_str());
     } catch (const Error& e) {
       raise(g_error, with_keywords(e.what()).c_str());
     }

@@ -61,8 +61,8 @@ std::string key(const OptionSpec& spec) { return std::string(spec.name); }
 void validate_surface_keywords(const SurfacePipelineOptions& options, SurfaceInput input) {
   try {
     options.validate(input);
-  } catch (const Error& e) {
-    throw Error(spell_option_names(
+  } catch (const OptionError& e) {
+    throw OptionError(spell_option_names(
         e.what(), OptionSpellings{{"t0", "`" + key(kSurfaceOptionSpecs.coarsen) + "`"}}));
   }
 }

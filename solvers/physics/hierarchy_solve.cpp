@@ -11,11 +11,13 @@ namespace molmesh::solvers {
 SolveLevels solve_levels(const Hierarchy& hierarchy, const HierarchySolveOptions& options,
                          Preconditioning preconditioning) {
   const int levels = static_cast<int>(hierarchy.levels.size());
+  // A hierarchy without levels is a damaged input, not a bad `level`.
+  if (levels == 0) throw Error("the hierarchy has no levels");
   if (options.level < 0 || options.level >= levels) {
-    throw Error("`level` " + std::to_string(options.level) + ": the hierarchy has " +
-                std::to_string(levels) + " level(s) (0.." + std::to_string(levels - 1) + ")");
+    throw OptionError("`level` " + std::to_string(options.level) + ": the hierarchy has " +
+                      std::to_string(levels) + " level(s) (0.." + std::to_string(levels - 1) + ")");
   }
-  if (options.max_levels < 0) throw Error("`max_levels` must not be negative");
+  if (options.max_levels < 0) throw OptionError("`max_levels` must not be negative");
   SolveLevels out;
   out.mesh = &hierarchy.levels[static_cast<std::size_t>(options.level)].volume;
   int last = levels - 1;

@@ -43,6 +43,10 @@ TEST(OptionRanges, NonFiniteAndAbsurdValuesAreUsageErrorsNamingTheOption) {
       {"surface " + fas2 + " --min-cavity-volume nan -o " + (dir / "s.off"), "--min-cavity-volume"},
       {"surface " + fas2 + " --spacing nan -o " + (dir / "s.off"), "--spacing"},
       {"surface " + fas2 + " --isovalue -inf -o " + (dir / "s.off"), "--isovalue"},
+      // In the CLI's range (a volume's level may be negative) but not for atoms: the library
+      // refuses it once the input is known, and that is a bad option value too.
+      {"surface " + fas2 + " --isovalue -1 -o " + (dir / "s.off"), "--isovalue"},
+      {"tetmesh " + fas2 + " --isovalue 0 -o " + (dir / "t.m"), "--isovalue"},
       {"surface " + fas2 + " --max-memory nan -o " + (dir / "s.off"), "--max-memory"},
       {"surface " + fas2 + " -o " + (dir / "s.xyz"), "--output"},
       {"tetmesh " + ion + " -o " + (dir / "t.xyz"), "--output"},

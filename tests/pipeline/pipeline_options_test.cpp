@@ -19,11 +19,12 @@ namespace {
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-// The message validate() throws, or "" when it accepts the options.
+// The message validate() throws, or "" when it accepts the options; any other exception
+// than OptionError fails the test.
 std::string complaint(const std::function<void()>& validate) {
   try {
     validate();
-  } catch (const Error& e) {
+  } catch (const OptionError& e) {  // the type the CLI maps to exit code 2
     return e.what();
   }
   return "";

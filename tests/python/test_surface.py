@@ -103,8 +103,10 @@ def test_ses_surface_is_the_clis_bit_for_bit(tmp_path):
     assert surf.vertices.shape != molmesh.surface(atoms).vertices.shape
     with pytest.raises(ValueError, match="surface='sphere': expected one of"):
         molmesh.surface(atoms, surface="sphere")
-    with pytest.raises(molmesh.Error, match="`probe_radius`"):
+    with pytest.raises(molmesh.OptionError, match="`probe_radius`"):
         molmesh.surface(atoms, surface="sas", probe_radius=-1.0)
+    with pytest.raises(ValueError, match="`isovalue`"):  # OptionError is a ValueError
+        molmesh.surface(atoms, isovalue=-1.0)
 
 
 def test_keep_spheres_as_file_or_array(tmp_path, fas2_atoms):

@@ -77,6 +77,10 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     status = rank == 0 ? (app.exit(e) == 0 ? kSuccess : kUsage)
                        : (e.get_exit_code() == 0 ? kSuccess : kUsage);
+  } catch (const molmesh::OptionError& e) {
+    std::fprintf(stderr, "molmesh-petsc: error: %s\n",
+                 molmesh::cli::with_cli_flags(e.what()).c_str());
+    status = kUsage;
   } catch (const molmesh::InputError& e) {
     std::fprintf(stderr, "molmesh-petsc: error: %s\n",
                  molmesh::cli::with_cli_flags(e.what()).c_str());

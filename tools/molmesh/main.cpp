@@ -30,6 +30,9 @@ int main(int argc, char** argv) {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     return app.exit(e) == 0 ? kSuccess : kUsage;
+  } catch (const molmesh::OptionError& e) {
+    std::fprintf(stderr, "molmesh: error: %s\n", with_cli_flags(e.what()).c_str());
+    return kUsage;
   } catch (const molmesh::InputError& e) {
     std::fprintf(stderr, "molmesh: error: %s\n", with_cli_flags(e.what()).c_str());
     return kInputError;

@@ -21,6 +21,14 @@ class Error : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// An option's value is outside what it may be: its stated range, or what the input allows
+// (an isovalue <= 0 for atoms, a level the hierarchy does not have). The CLI's exit code 2,
+// as for a bad value on the command line; Python's ValueError.
+class OptionError : public Error {
+ public:
+  using Error::Error;
+};
+
 // A file is missing, unreadable or malformed. The message starts with "file:line: " when a
 // line is known, so editors and terminals can jump to it.
 class InputError : public Error {

@@ -27,8 +27,8 @@ void check_range(std::string_view member, const OptionRange& range, double value
                       (range.lowest_excluded ? value > range.lowest : value >= range.lowest);
   // NaN fails every comparison; inf fails inside unbounded ranges only here.
   if (inside && std::isfinite(value)) return;
-  throw Error("`" + std::string(member) + "` must be a finite number in " + range_text(range) +
-              " (got " + number(value) + ")");
+  throw OptionError("`" + std::string(member) + "` must be a finite number in " +
+                    range_text(range) + " (got " + number(value) + ")");
 }
 
 void check_range(const OptionSpec& spec, double value) {

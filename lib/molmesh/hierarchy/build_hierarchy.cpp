@@ -32,11 +32,11 @@ void mark_surface(SurfaceMesh& surface, const std::vector<Sphere>& active_site) 
 }
 
 void HierarchyOptions::validate() const {
-  if (t0.empty()) throw Error("hierarchy: give at least one T0 value (`t0`)");
+  if (t0.empty()) throw OptionError("hierarchy: give at least one T0 value (`t0`)");
   for (std::size_t i = 0; i < t0.size(); ++i) {
     check_range(kHierarchyOptionSpecs.t0, t0[i]);
     if (i > 0 && t0[i] < t0[i - 1]) {
-      throw Error("hierarchy: T0 values (`t0`) must not decrease (level 0 is the finest)");
+      throw OptionError("hierarchy: T0 values (`t0`) must not decrease (level 0 is the finest)");
     }
   }
   check_range(kHierarchyOptionSpecs.size_growth, size_growth);

@@ -15,9 +15,11 @@ std::vector<std::filesystem::path> export_hierarchy(const Hierarchy& hierarchy,
                                                     const std::filesystem::path& prefix,
                                                     const ExportOptions& options) {
   const int levels = static_cast<int>(hierarchy.levels.size());
+  // A hierarchy without levels is a damaged input, not a bad `level`.
+  if (levels == 0) throw Error("the hierarchy has no levels");
   if (options.level >= levels || options.level < -1) {
-    throw Error("`level` " + std::to_string(options.level) + ": the hierarchy has " +
-                std::to_string(levels) + " level(s) (0.." + std::to_string(levels - 1) + ")");
+    throw OptionError("`level` " + std::to_string(options.level) + ": the hierarchy has " +
+                      std::to_string(levels) + " level(s) (0.." + std::to_string(levels - 1) + ")");
   }
   const std::string stem = prefix.string();
   std::vector<std::filesystem::path> written;

@@ -127,7 +127,7 @@ void SurfacePipelineOptions::validate(SurfaceInput input) const {
   if (input == SurfaceInput::kAtoms) {
     check_range(specs.isovalue, isovalue);
   } else if (!std::isfinite(isovalue)) {
-    throw Error("`isovalue` must be a finite number (got " + std::to_string(isovalue) + ")");
+    throw OptionError("`isovalue` must be a finite number (got " + std::to_string(isovalue) + ")");
   }
   check_range(specs.min_cavity_volume, min_cavity_volume);
   processing.validate();

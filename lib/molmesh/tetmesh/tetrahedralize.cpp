@@ -299,7 +299,8 @@ std::string tetgen_switches(const TetMeshOptions& options, bool graded) {
   } else {
     switches = options.tetgen_switches;
     if (switches.find_first_of("rRwmk") != std::string::npos)
-      throw Error("`tetgen_switches`: r, R, w, m and k are not supported (molmesh meshes a PLC)");
+      throw OptionError(
+          "`tetgen_switches`: r, R, w, m and k are not supported (molmesh meshes a PLC)");
     if (switches.find('p') == std::string::npos) switches.insert(0, "p");
   }
   for (char c : std::string("znQ"))
@@ -388,7 +389,7 @@ std::string domain_name(Domain domain) {
 
 void TetMeshOptions::validate() const {
   auto require = [](bool ok, const std::string& what) {
-    if (!ok) throw Error(what);
+    if (!ok) throw OptionError(what);
   };
   require(std::isfinite(sphere_ratio) && sphere_ratio > 0.0 && sphere_ratio <= kMaxSphereRatio,
           "the sphere ratio (`sphere_ratio`) must be a finite number in (0, " +
