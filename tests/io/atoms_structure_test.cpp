@@ -225,6 +225,104 @@ TEST(Structure, MmcifCoordinateThatIsNotANumberNamesItsLine) {
       {"pair.cif:10:", "Cartn_z '?'"});
 }
 
+// The first atoms of 1a1p (tests/fuzz/corpus/mmcif/1a1p_head.cif): atom N is on line 20 + N.
+std::string mmcif_head() {
+  std::string text =
+      "data_1a1p\nloop_\n_atom_site.id\n_atom_site.type_symbol\n_atom_site.label_atom_id\n"
+      "_atom_site.label_alt_id\n_atom_site.label_comp_id\n_atom_site.label_asym_id\n"
+      "_atom_site.label_entity_id\n_atom_site.label_seq_id\n_atom_site.pdbx_PDB_ins_code\n"
+      "_atom_site.Cartn_x\n_atom_site.Cartn_y\n_atom_site.Cartn_z\n_atom_site.occupancy\n"
+      "_atom_site.B_iso_or_equiv\n_atom_site.pdbx_formal_charge\n_atom_site.auth_seq_id\n"
+      "_atom_site.auth_asym_id\n_atom_site.pdbx_PDB_model_num\n";
+  const char* atoms[] = {"1 N N", "2 C CA", "3 C C", "4 O O", "5 C CB"};
+  for (int i = 0; i < 5; ++i)
+    text += std::string(atoms[i]) + " . ILE poly . 1 ? -7.1 5." + std::to_string(i) +
+            " 0.6 1 0 ? 1 '' 1\n";
+  return text;
+}
+
+// Replaces the `field`-th field (from 0) of atom `atom`'s line by `value`.
+std::string with_atom_field(std::string text, int atom, int field, const std::string& value) {
+  std::size_t pos = 0;
+  for (int line = 1; line < 20 + atom; ++line) pos = text.find('\n', pos) + 1;
+  for (int f = 0; f < field; ++f) pos = text.find(' ', pos) + 1;
+  const std::size_t end = text.find_first_of(" \n", pos);
+  return text.replace(pos, end - pos, value);
+}
+
+TEST(Structure, MmcifIntegerBeyondIntNamesItsLineAndColumn) {
+  // gemmi parses integer columns without an overflow check (signed overflow: a 40-digit
+  // _atom_site.id was UBSan's report, tests/fuzz/crashes/mmcif/mmcif-atom-id-overflow-1), and a
+  // residue number of 99999999999999 became a wrapped one, exit 0. Every column it reads as an
+  // int is checked first (atoms_structure.cpp, kIntColumns), naming file:line and column.
+  const std::string head = mmcif_head();
+  EXPECT_EQ(read_atoms(write_text("good.cif", head)).size(), 5u);
+  // An insertion code after the residue number is part of auth_seq_id; a negative number,
+  // '?' and '.' are values gemmi reads.
+  EXPECT_EQ(read_atoms(write_text("icode.cif", with_atom_field(head, 5, 15, "12A"))).size(), 5u);
+  EXPECT_EQ(read_atoms(write_text("neg.cif", with_atom_field(head, 5, 7, "-3"))).size(), 5u);
+  EXPECT_EQ(read_atoms(write_text("null.cif", with_atom_field(head, 5, 7, "."))).size(), 5u);
+  const std::string range = "is not an integer from -2147483648 to 2147483647";
+  expect_input_error(
+      [&] { read_atoms(write_text("a.cif", with_atom_field(head, 4, 15, "99999999999999"))); },
+      {"a.cif:24: _atom_site.auth_seq_id '99999999999999' of atom 4 " + range});
+  expect_input_error(
+      [&] { read_atoms(write_text("b.cif", with_atom_field(head, 5, 7, "-99999999999999"))); },
+      {"b.cif:25: _atom_site.label_seq_id '-99999999999999' of atom 5 " + range});
+  expect_input_error(
+      [&] { read_atoms(write_text("c.cif", with_atom_field(head, 3, 15, "99999999999A"))); },
+      {"c.cif:23: _atom_site.auth_seq_id '99999999999A' of atom 3 " + range});
+  expect_input_error(
+      [&] { read_atoms(write_text("d.cif", with_atom_field(head, 2, 0, std::string(40, '9')))); },
+      {"d.cif:22: _atom_site.id '9999", "of atom 2 starts with a number that " + range});
+  expect_input_error(
+      [&] { read_atoms(write_text("e.cif", with_atom_field(head, 2, 14, "2147483648"))); },
+      {"e.cif:22: _atom_site.pdbx_formal_charge '2147483648' of atom 2 " + range});
+  // Not a number where gemmi parses an int: it threw "not an integer: abc", with no line.
+  expect_input_error([&] { read_atoms(write_text("f.cif", with_atom_field(head, 3, 14, "abc"))); },
+                     {"f.cif:23: _atom_site.pdbx_formal_charge 'abc' of atom 3 is not an integer"});
+  expect_input_error([&] { read_atoms(write_text("g.cif", with_atom_field(head, 1, 7, "1.5"))); },
+                     {"g.cif:21: _atom_site.label_seq_id '1.5' of atom 1 is not an integer"});
+  // Columns of other categories, as a loop and as tag-value pairs (the tag's line).
+  expect_input_error(
+      [&] {
+        read_atoms(write_text("h.cif", head + "loop_\n_entity_poly_seq.entity_id\n"
+                                              "_entity_poly_seq.num\n_entity_poly_seq.mon_id\n"
+                                              "1 1 ILE\n1 -99999999999999 ALA\n"));
+      },
+      {"h.cif:31: _entity_poly_seq.num '-99999999999999' of row 2 " + range});
+  expect_input_error(
+      [&] {
+        read_atoms(write_text("i.cif", head + "_exptl.method 'X-RAY DIFFRACTION'\n"
+                                              "_exptl.crystals_number 99999999999999\n"));
+      },
+      {"i.cif:27: _exptl.crystals_number '99999999999999' of row 1 " + range});
+}
+
+TEST(Structure, MmcifAssemblyOperatorRangesAreBounded) {
+  // gemmi expands "(1-60)" into 60 operator names one by one, counting with an int: a range
+  // of 2e9 listed gigabytes of strings (bad_alloc: exit 70) and one ending at 2147483647 never
+  // stopped (signed overflow). Real assemblies list dozens.
+  const auto assembly = [](const std::string& operators) {
+    return mmcif_head() +
+           "_pdbx_struct_assembly.id 1\n_pdbx_struct_assembly.details author_defined_assembly\n"
+           "_pdbx_struct_assembly.method_details ?\n_pdbx_struct_assembly.oligomeric_details "
+           "monomeric\n_pdbx_struct_assembly.oligomeric_count 1\n"
+           "_pdbx_struct_assembly_gen.assembly_id 1\n_pdbx_struct_assembly_gen.oper_expression " +
+           operators + "\n_pdbx_struct_assembly_gen.asym_id_list poly\n";
+  };
+  EXPECT_EQ(read_atoms(write_text("icosahedral.cif", assembly("'(1-60)'"))).size(), 5u);
+  EXPECT_EQ(read_atoms(write_text("list.cif", assembly("1,3-5,X"))).size(), 5u);
+  expect_input_error([&] { read_atoms(write_text("a.cif", assembly("'(1-2000000000)'"))); },
+                     {"a.cif:32: _pdbx_struct_assembly_gen.oper_expression '(1-2000000000)' of "
+                      "row 1 lists more than 1000000 operators"});
+  expect_input_error(
+      [&] { read_atoms(write_text("b.cif", assembly("2147483647-2147483647"))); },
+      {"b.cif:32: _pdbx_struct_assembly_gen.oper_expression", "from 0 to 2147483646"});
+  expect_input_error([&] { read_atoms(write_text("c.cif", assembly("1-99999999999"))); },
+                     {"c.cif:32:", "from 0 to 2147483646"});
+}
+
 TEST(Structure, TruncatedGzipIsAnInputError) {
   const std::string text = test::slurp(kData / "1a1p.pdb");
   const auto gz = test::scratch_dir() / "cut.pdb.gz";
