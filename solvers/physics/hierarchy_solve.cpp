@@ -11,12 +11,7 @@ namespace molmesh::solvers {
 SolveLevels solve_levels(const Hierarchy& hierarchy, const HierarchySolveOptions& options,
                          Preconditioning preconditioning) {
   const int levels = static_cast<int>(hierarchy.levels.size());
-  // A hierarchy without levels is a damaged input, not a bad `level`.
-  if (levels == 0) throw Error("the hierarchy has no levels");
-  if (options.level < 0 || options.level >= levels) {
-    throw OptionError("`level` " + std::to_string(options.level) + ": the hierarchy has " +
-                      std::to_string(levels) + " level(s) (0.." + std::to_string(levels - 1) + ")");
-  }
+  require_level(hierarchy, options.level);
   if (options.max_levels < 0) throw OptionError("`max_levels` must not be negative");
   SolveLevels out;
   out.mesh = &hierarchy.levels[static_cast<std::size_t>(options.level)].volume;

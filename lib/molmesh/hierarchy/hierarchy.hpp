@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "molmesh/core/error.hpp"
 #include "molmesh/surface/surface_mesh.hpp"
 #include "molmesh/tetmesh/tet_mesh.hpp"
 
@@ -44,5 +45,16 @@ struct Hierarchy {
   std::string input_name;
   std::string input_checksum;  // SHA-256 (hex) of the input file's bytes
 };
+
+// Throws unless `level` is one of the hierarchy's levels: Error when it has none (a damaged
+// input, not a bad `level`), OptionError naming `level` otherwise.
+inline void require_level(const Hierarchy& hierarchy, int level) {
+  const int levels = static_cast<int>(hierarchy.levels.size());
+  if (levels == 0) throw Error("the hierarchy has no levels");
+  if (level < 0 || level >= levels) {
+    throw OptionError("`level` " + std::to_string(level) + ": the hierarchy has " +
+                      std::to_string(levels) + " level(s) (0.." + std::to_string(levels - 1) + ")");
+  }
+}
 
 }  // namespace molmesh

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <gemmi/atox.hpp>
 #include <gemmi/cif.hpp>
 #include <gemmi/mmcif.hpp>
 #include <gemmi/pdb.hpp>
@@ -195,15 +196,13 @@ constexpr long long kMaxAssemblyOperators = 1000000;
 constexpr long long kIntMin = std::numeric_limits<int>::min();
 constexpr long long kIntMax = std::numeric_limits<int>::max();
 
-// gemmi's blank (atox.hpp is_space): HT, LF, VT, FF, CR and space.
-bool gemmi_space(char c) { return c == ' ' || (c >= '\t' && c <= '\r'); }
 bool digit(char c) { return c >= '0' && c <= '9'; }
 
 // The optional sign and digits at s[i...] as gemmi's string_to_int reads them (i is moved past
 // them); `digits` says whether there were any. nullopt when the number is outside int.
 std::optional<long long> leading_integer(std::string_view s, std::size_t& i, bool& digits,
                                          bool sign = true) {
-  while (i < s.size() && gemmi_space(s[i])) ++i;
+  while (i < s.size() && gemmi::is_space(s[i])) ++i;
   bool negative = false;
   if (sign && i < s.size() && (s[i] == '-' || s[i] == '+')) negative = s[i++] == '-';
   long long n = 0;
@@ -226,7 +225,7 @@ std::string int_problem(const std::string& raw, IntRead read) {
     std::size_t i = 0;
     bool digits = false;
     const auto n = leading_integer(s, i, digits);
-    while (i < s.size() && gemmi_space(s[i])) ++i;
+    while (i < s.size() && gemmi::is_space(s[i])) ++i;
     if (!digits || i != s.size()) return "is not an integer";
     return n ? "" : "is not " + range;
   };

@@ -15,12 +15,8 @@ std::vector<std::filesystem::path> export_hierarchy(const Hierarchy& hierarchy,
                                                     const std::filesystem::path& prefix,
                                                     const ExportOptions& options) {
   const int levels = static_cast<int>(hierarchy.levels.size());
-  // A hierarchy without levels is a damaged input, not a bad `level`.
-  if (levels == 0) throw Error("the hierarchy has no levels");
-  if (options.level >= levels || options.level < -1) {
-    throw OptionError("`level` " + std::to_string(options.level) + ": the hierarchy has " +
-                      std::to_string(levels) + " level(s) (0.." + std::to_string(levels - 1) + ")");
-  }
+  // Level -1 (every level) needs level 0.
+  require_level(hierarchy, options.level == -1 ? 0 : options.level);
   const std::string stem = prefix.string();
   std::vector<std::filesystem::path> written;
   auto name = [&](const std::string& suffix) {
