@@ -4,7 +4,10 @@
 
 #include <gtest/gtest.h>
 
+#include <cctype>
 #include <string>
+#include <string_view>
+#include <vector>
 
 #include "io/io_test_support.hpp"
 
@@ -13,6 +16,26 @@ namespace {
 
 using io_detail::parse_double;
 using io_detail::parse_integer;
+using io_detail::split_fields;
+using io_detail::trim;
+
+// One definition of blank for trim and split_fields (issue 18): trim kept \v and \f while
+// split_fields treated them as separators, and split_fields kept \r inside a field.
+TEST(TextInput, TrimAndSplitFieldsShareOneBlankSet) {
+  EXPECT_EQ(trim("\v\f x \r\n"), "x");
+  EXPECT_EQ(split_fields("a\rb\vc"), (std::vector<std::string_view>{"a", "b", "c"}));
+  EXPECT_EQ(split_fields("a,\fb", true), (std::vector<std::string_view>{"a", "b"}));
+  // The set is the C locale's isspace (tests run in the C locale), byte by byte; a line of
+  // any of them trims to nothing and has no fields.
+  for (int c = 0; c < 256; ++c) {
+    const char ch = static_cast<char>(c);
+    EXPECT_EQ(io_detail::is_blank(ch), std::isspace(c) != 0) << "byte " << c;
+    if (!io_detail::is_blank(ch)) continue;
+    const std::string line(3, ch);
+    EXPECT_TRUE(trim(line).empty()) << "byte " << c;
+    EXPECT_TRUE(split_fields(line).empty()) << "byte " << c;
+  }
+}
 
 TEST(TextInput, ParseDoubleTakesWholeFiniteDecimalFieldsOnly) {
   EXPECT_EQ(parse_double("1.5"), 1.5);

@@ -33,9 +33,8 @@ void read_table(const std::filesystem::path& path, std::size_t min_fields, const
   long long expected = -1;
   long long seen = 0;
   while (lines.next(line)) {
-    // Blank means "no fields" by split_fields' separators, which include form feed and
-    // vertical tab: a line of those is blank too (trim() keeps them, and front() on its
-    // empty field list was undefined).
+    // Blank means "no fields": a line of form feeds or vertical tabs is blank too (front()
+    // on its empty field list was undefined).
     const auto fields = split_fields(line);
     if (fields.empty() || fields.front().front() == '#') continue;
     if (expected < 0) {

@@ -85,9 +85,7 @@ bool LineCursor::next(std::string_view& line) {
 
 std::vector<std::string_view> split_fields(std::string_view line, bool commas) {
   std::vector<std::string_view> fields;
-  auto separator = [commas](char c) {
-    return c == ' ' || c == '\t' || c == '\v' || c == '\f' || (commas && c == ',');
-  };
+  auto separator = [commas](char c) { return is_blank(c) || (commas && c == ','); };
   std::size_t i = 0;
   while (i < line.size()) {
     while (i < line.size() && separator(line[i])) ++i;
@@ -99,9 +97,8 @@ std::vector<std::string_view> split_fields(std::string_view line, bool commas) {
 }
 
 std::string_view trim(std::string_view s) {
-  const auto blank = [](char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n'; };
-  while (!s.empty() && blank(s.front())) s.remove_prefix(1);
-  while (!s.empty() && blank(s.back())) s.remove_suffix(1);
+  while (!s.empty() && is_blank(s.front())) s.remove_prefix(1);
+  while (!s.empty() && is_blank(s.back())) s.remove_suffix(1);
   return s;
 }
 

@@ -41,9 +41,18 @@ class LineCursor {
   std::size_t line_number_ = 0;
 };
 
-// Fields separated by blanks (space, tab) and, when `commas`, commas.
+// The readers' one idea of whitespace, the C locale's isspace set: space, \t, \r, \n, \v,
+// \f. split_fields and trim both use it, so a line trim() calls non-blank always has a
+// field (a line of form feeds was once non-blank to trim() but had no fields, and the MSMS
+// reader took the first of none). Not std::isspace: that one follows the global locale.
+constexpr bool is_blank(char c) {
+  return c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\v' || c == '\f';
+}
+
+// Fields separated by runs of blanks (is_blank) and, when `commas`, commas.
 std::vector<std::string_view> split_fields(std::string_view line, bool commas = false);
 
+// `s` without leading and trailing blanks (is_blank).
 std::string_view trim(std::string_view s);
 
 // Whole-field parses: nullopt unless the entire field is one finite number in plain
