@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "io/mrc_test_file.hpp"
 #include "molmesh/io/read_atoms.hpp"
 #include "molmesh/io/surface_mesh_io.hpp"
 #include "molmesh/io/volume_io.hpp"
@@ -163,6 +164,46 @@ TEST(VolumeInput, SurfaceCommandWritesAndRecontoursItsVolumeAndBlursFast) {
   const Dislocation d = measure_dislocation(read_surface_mesh(c), sa);
   EXPECT_LT(d.mean, 0.5);
   EXPECT_EQ(molmesh("surface " + pqr + " --blur slow -o " + c.string()), 2);
+}
+
+// Issue 18: a volume whose data does not match its header is exit code 3 with the file (and
+// for DX the line) named, and no output; the DX values on later lines and the MRC bytes
+// after the data were exit 0 before. tests/io/volume_io_test.cpp has each reader message.
+TEST(VolumeInput, DataThatDoesNotMatchTheHeaderExitsWithCode3) {
+  const std::string dx_head =
+      "object 1 class gridpositions counts 2 1 1\norigin 0 0 0\ndelta 1 0 0\ndelta 0 1 0\n"
+      "delta 0 0 1\nobject 3 class array type double rank 0 items 2 data follows\n";
+  const std::string dx_tail = "attribute \"dep\" string \"positions\"\n";
+  test::MrcSpec spec;
+  spec.n = {2, 2, 2};
+  const std::string mrc = test::make_mrc(spec, std::vector<double>(8, 1.0));
+  std::string nsymbt_past_end = mrc;
+  const std::int32_t nsymbt = 4096;
+  std::memcpy(nsymbt_past_end.data() + 4 * 23, &nsymbt, 4);
+  struct Case {
+    const char* file;
+    std::string bytes;
+    std::string where;  // after the path in the message
+  };
+  const Case cases[] = {
+      {"fewer_eof.dx", dx_head + "1\n", ":7: file ends after 1 of 2 values"},
+      {"fewer.dx", dx_head + "1\n" + dx_tail, ":8: data ends after 1 of 2 values"},
+      {"more_same_line.dx", dx_head + "1 2 3\n" + dx_tail, ":7: more values than the 2 items"},
+      {"more_next_line.dx", dx_head + "1 2\n3\n" + dx_tail, ":8: more values than the 2 items"},
+      {"short.mrc", mrc.substr(0, mrc.size() - 4), ": file has 1052 bytes"},
+      {"trailing.mrc", mrc + std::string(4, '\0'), ": file has 1060 bytes"},
+      {"nsymbt.map", nsymbt_past_end, ": file has 1056 bytes"},
+  };
+  const fs::path out = testing::test_dir() / "out.off";
+  for (const Case& c : cases) {
+    const fs::path file = testing::write_file(testing::test_dir() / c.file, c.bytes);
+    std::string err;
+    EXPECT_EQ(molmesh("surface " + file.string() + " --isovalue 0.5 -o " + out.string(), &err), 3)
+        << c.file << ": " << err;
+    EXPECT_NE(err.find("molmesh: error: " + file.string() + c.where), std::string::npos)
+        << c.file << ": " << err;
+    EXPECT_FALSE(fs::exists(out)) << c.file;
+  }
 }
 
 }  // namespace

@@ -8,14 +8,18 @@
 #include <cstring>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "io/io_test_support.hpp"
+#include "io/mrc_test_file.hpp"
 #include "molmesh/core/error.hpp"
 
 namespace molmesh {
 namespace {
 
 using test::expect_input_error;
+using test::make_mrc;
+using test::MrcSpec;
 using test::write_text;
 
 // Values that differ along every axis, so a transposed reader cannot pass.
@@ -93,64 +97,6 @@ TEST(VolumeIo, MrcRoundTripKeepsGeometryAndFloats) {
     EXPECT_EQ(std::filesystem::file_size(path), 1024 + 4 * g.size());
     expect_same(g, read_volume(path), 1e-6);
   }
-}
-
-// A hand-made MRC: header words set explicitly, data in the given file order.
-struct MrcSpec {
-  std::array<std::int32_t, 3> n{1, 1, 1};
-  std::int32_t mode = 2;
-  std::array<std::int32_t, 3> start{0, 0, 0};
-  std::array<std::int32_t, 3> m{1, 1, 1};
-  std::array<float, 3> cell{1, 1, 1};
-  std::array<std::int32_t, 3> axes{1, 2, 3};
-  std::array<float, 3> origin{0, 0, 0};
-  std::int32_t nsymbt = 0;
-  bool big_endian = false;
-};
-
-std::string make_mrc(const MrcSpec& s, const std::vector<double>& file_order_values) {
-  std::string b(1024 + static_cast<std::size_t>(s.nsymbt), '\0');
-  auto put = [&](int word, const void* v) {
-    char raw[4];
-    std::memcpy(raw, v, 4);
-    if (s.big_endian) std::reverse(raw, raw + 4);
-    std::memcpy(b.data() + 4 * (word - 1), raw, 4);
-  };
-  for (int k = 0; k < 3; ++k) {
-    put(1 + k, &s.n[k]);
-    put(5 + k, &s.start[k]);
-    put(8 + k, &s.m[k]);
-    put(11 + k, &s.cell[k]);
-    put(17 + k, &s.axes[k]);
-    put(50 + k, &s.origin[k]);
-  }
-  put(4, &s.mode);
-  put(24, &s.nsymbt);
-  std::memcpy(b.data() + 208, "MAP ", 4);
-  const unsigned char stamp = s.big_endian ? 0x11 : 0x44;
-  std::memset(b.data() + 212, stamp, 2);
-  for (double v : file_order_values) {
-    char raw[4];
-    std::size_t n = 4;
-    if (s.mode == 0) {
-      raw[0] = static_cast<char>(static_cast<signed char>(v));
-      n = 1;
-    } else if (s.mode == 1) {
-      const auto x = static_cast<std::int16_t>(v);
-      std::memcpy(raw, &x, 2);
-      n = 2;
-    } else if (s.mode == 6) {
-      const auto x = static_cast<std::uint16_t>(v);
-      std::memcpy(raw, &x, 2);
-      n = 2;
-    } else {
-      const auto x = static_cast<float>(v);
-      std::memcpy(raw, &x, 4);
-    }
-    if (s.big_endian) std::reverse(raw, raw + n);
-    b.append(raw, n);
-  }
-  return b;
 }
 
 TEST(VolumeIo, MrcPermutedAxisOrder) {
@@ -255,6 +201,112 @@ TEST(VolumeIo, MalformedVolumesAreInputErrors) {
                      {"v.vtk", "unknown volume format"});
   expect_input_error([&] { read_volume(test::scratch_dir() / "none.dx"); },
                      {"none.dx", "no such file"});
+}
+
+// Data that does not match its header (issue 18): each case is an InputError naming the
+// file (and for DX the line), never a grid read from part of the file or past it.
+// A 2x1x1 DX grid announcing 2 values (data array on line 6) with the given data lines.
+std::string dx_with_data(const std::string& data) {
+  return "object 1 class gridpositions counts 2 1 1\norigin 0 0 0\ndelta 1 0 0\ndelta 0 1 0\n"
+         "delta 0 0 1\nobject 3 class array type double rank 0 items 2 data follows\n" +
+         data;
+}
+
+const std::string kDxTail =
+    "attribute \"dep\" string \"positions\"\n"
+    "object \"regular positions regular connections\" class field\n";
+
+TEST(VolumeIo, DxFewerValuesThanItemsAtTheEndOfTheFile) {
+  expect_input_error([] { read_volume(write_text("short.dx", dx_with_data("1\n"))); },
+                     {"short.dx:7: file ends after 1 of 2 values (declared on line 6)"});
+}
+
+TEST(VolumeIo, DxFewerValuesThanItemsBeforeTheNextObject) {
+  // Was "value 'attribute' is not a finite number": right line, wrong reason.
+  expect_input_error(
+      [] { read_volume(write_text("short.dx", dx_with_data("1\n" + kDxTail))); },
+      {"short.dx:8: data ends after 1 of 2 values (declared on line 6), at 'attribute'"});
+}
+
+TEST(VolumeIo, DxMoreValuesThanItemsOnTheLastDataLine) {
+  expect_input_error([] { read_volume(write_text("long.dx", dx_with_data("1 2 3\n" + kDxTail))); },
+                     {"long.dx:7: more values than the 2 items declared on line 6"});
+}
+
+TEST(VolumeIo, DxMoreValuesThanItemsOnLaterLines) {
+  // The reader stopped at the count and skipped the rest like an unknown keyword: exit 0
+  // with the first two values.
+  expect_input_error(
+      [] { read_volume(write_text("long.dx", dx_with_data("1 2\n\n3 4\n" + kDxTail))); },
+      {"long.dx:9: more values than the 2 items declared on line 6"});
+  expect_input_error(
+      [] { read_volume(write_text("tail.dx", dx_with_data("1 2\n" + kDxTail + "5\n"))); },
+      {"tail.dx:10: more values than the 2 items declared on line 6"});
+  // The exact count with APBS's trailer still reads.
+  EXPECT_EQ(read_volume(write_text("ok.dx", dx_with_data("1 2\n" + kDxTail))).values,
+            (std::vector<double>{1, 2}));
+}
+
+// NSYMBT (word 24) set in the header only, the file built without an extended header.
+std::string with_nsymbt(std::string bytes, std::int32_t nsymbt) {
+  std::memcpy(bytes.data() + 4 * 23, &nsymbt, 4);
+  return bytes;
+}
+
+TEST(VolumeIo, MrcDataShorterThanTheHeaderSays) {
+  MrcSpec s;
+  s.n = {2, 2, 2};
+  for (std::int32_t mode : {0, 1, 2, 6}) {
+    s.mode = mode;
+    // One value short, and (for multi-byte modes) one byte short.
+    expect_input_error(
+        [&] { read_volume(write_text("short.mrc", make_mrc(s, std::vector<double>(7, 1.0)))); },
+        {"short.mrc: file has", "truncated"});
+    std::string cut = make_mrc(s, std::vector<double>(8, 1.0));
+    cut.pop_back();
+    expect_input_error([&] { read_volume(write_text("cut.ccp4", cut)); },
+                       {"cut.ccp4: file has " + std::to_string(cut.size()) + " bytes",
+                        "needs " + std::to_string(cut.size() + 1)});
+  }
+}
+
+TEST(VolumeIo, MrcBytesAfterTheDataAreAnError) {
+  // Accepted before, the extra bytes ignored: a header whose NX/NY/NZ, MODE or NSYMBT is
+  // wrong read a grid the file does not hold (docs/inputs.md).
+  MrcSpec s;
+  s.n = {2, 2, 2};
+  const std::string exact = make_mrc(s, std::vector<double>(8, 1.0));
+  EXPECT_EQ(read_volume(write_text("exact.mrc", exact)).values.size(), 8u);
+  expect_input_error([&] { read_volume(write_text("long.mrc", exact + '\0')); },
+                     {"long.mrc: file has 1057 bytes", "accounts for 1056: 1 byte after the data"});
+  // A whole ninth value: the header says 2x2x2.
+  expect_input_error(
+      [&] { read_volume(write_text("nine.map", make_mrc(s, std::vector<double>(9, 1.0)))); },
+      {"nine.map: file has 1060 bytes", "4 bytes after the data"});
+  // An extended header the header does not announce (NSYMBT 0) looks the same.
+  MrcSpec ext = s;
+  ext.nsymbt = 80;
+  expect_input_error(
+      [&] {
+        read_volume(
+            write_text("ext.mrc", with_nsymbt(make_mrc(ext, std::vector<double>(8, 1.0)), 0)));
+      },
+      {"ext.mrc:", "80 bytes after the data"});
+}
+
+TEST(VolumeIo, MrcExtendedHeaderRunningPastTheEnd) {
+  MrcSpec s;
+  s.n = {2, 2, 2};
+  const std::string map = make_mrc(s, std::vector<double>(8, 1.0));  // 1056 bytes
+  // Past the end of the file, past the data, and the largest int32.
+  expect_input_error([&] { read_volume(write_text("a.mrc", with_nsymbt(map, 4096))); },
+                     {"a.mrc: file has 1056 bytes", "after 5120 header bytes", "needs 5152"});
+  expect_input_error([&] { read_volume(write_text("b.mrc", with_nsymbt(map, 16))); },
+                     {"b.mrc: file has 1056 bytes", "after 1040 header bytes", "needs 1072"});
+  expect_input_error([&] { read_volume(write_text("c.mrc", with_nsymbt(map, 2147483647))); },
+                     {"c.mrc: file has 1056 bytes", "after 2147484671 header bytes"});
+  expect_input_error([&] { read_volume(write_text("d.mrc", with_nsymbt(map, -4))); },
+                     {"d.mrc:", "negative extended header size NSYMBT"});
 }
 
 TEST(VolumeIo, DxHoldsOneGrid) {

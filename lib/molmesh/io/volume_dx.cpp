@@ -34,6 +34,12 @@ Grid parse_dx(std::string_view text, const std::string& name) {
     const auto f = split_fields(line);
     if (f.empty()) continue;
     const std::size_t n = lines.line_number();
+    // Numbers on a line of their own after the data are more values than `items`: the
+    // loop below stops at the count, and they used to be skipped like an unknown keyword.
+    if (have_data && parse_double(f[0]))
+      throw InputError(name, n,
+                       "more values than the " + std::to_string(expected) +
+                           " items declared on line " + std::to_string(data_line));
     if (f[0] == "object" && f.size() >= 4 && f[2] == "class" && f[3] == "gridpositions") {
       if (f.size() != 8 || f[4] != "counts")
         throw InputError(name, n, "expected 'object 1 class gridpositions counts nx ny nz'");
@@ -102,20 +108,30 @@ Grid parse_dx(std::string_view text, const std::string& name) {
       // 1000^3 values used to zero 7.8 GB before reporting that it was short.
       std::vector<double> file_order;
       file_order.reserve(reservable(expected, 2, lines.remaining() + 1));
+      const auto count_message = [&](const std::string& what) {
+        return what + " " + std::to_string(file_order.size()) + " of " + std::to_string(expected) +
+               " values (declared on line " + std::to_string(data_line) + ")";
+      };
       while (file_order.size() < expected && lines.next(line)) {
-        for (const auto field : split_fields(line)) {
+        const auto fields = split_fields(line);
+        // The objects after the data began before all values came: the header's counts
+        // and the data disagree (said so, rather than "'attribute' is not a number").
+        if (!fields.empty() &&
+            (fields[0] == "attribute" || fields[0] == "object" || fields[0] == "component"))
+          throw InputError(
+              name, lines.line_number(),
+              count_message("data ends after") + ", at '" + std::string(fields[0]) + "'");
+        for (const auto field : fields) {
           const double value = require_double(field, "value", name, lines.line_number());
           if (file_order.size() >= expected)
-            throw InputError(
-                name, lines.line_number(),
-                "more values than the " + std::to_string(expected) + " items declared");
+            throw InputError(name, lines.line_number(),
+                             "more values than the " + std::to_string(expected) +
+                                 " items declared on line " + std::to_string(data_line));
           file_order.push_back(value);
         }
       }
       if (file_order.size() < expected)
-        throw InputError(name, lines.line_number(),
-                         "file ends after " + std::to_string(file_order.size()) + " of " +
-                             std::to_string(expected) + " values");
+        throw InputError(name, lines.line_number(), count_message("file ends after"));
       // File order has z fastest; the grid wants x fastest.
       grid.values.assign(expected, 0.0);
       const auto ny = static_cast<std::size_t>(grid.dims[1]);

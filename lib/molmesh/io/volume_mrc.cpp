@@ -122,6 +122,17 @@ Grid parse_mrc(const std::string& bytes, const std::string& name) {
                                (data_bytes.has_value() ? std::to_string(data_start + needed)
                                                        : std::string("more than 2^64")) +
                                " (truncated file or corrupt header?)");
+  // Bytes after the data mean the header does not describe this file: a wrong NSYMBT
+  // shifts every value, a wrong NX/NY/NZ or MODE reads a different grid, and which one is
+  // wrong cannot be told. They used to be ignored (docs/inputs.md, "Volumes match their
+  // headers exactly").
+  if (const std::size_t extra = bytes.size() - data_start - needed; extra != 0)
+    throw InputError(name, "file has " + std::to_string(bytes.size()) + " bytes but the header (" +
+                               shape + ", after " + std::to_string(data_start) +
+                               " header bytes) accounts for " +
+                               std::to_string(data_start + needed) + ": " + std::to_string(extra) +
+                               (extra == 1 ? " byte" : " bytes") +
+                               " after the data (wrong NX/NY/NZ, MODE or NSYMBT?)");
 
   // File axis f (0 = columns, fastest) runs along space axis axis[f]-1.
   Grid grid;
