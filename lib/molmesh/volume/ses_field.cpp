@@ -2,11 +2,13 @@
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_sort.h>
 
 #include <algorithm>
-#include <cstdint>
 #include <cmath>
+#include <cstdint>
 #include <limits>
+#include <utility>
 
 #include "molmesh/volume/ball_union.hpp"
 #include "molmesh/volume/distance_transform.hpp"
@@ -14,9 +16,15 @@
 namespace molmesh {
 namespace {
 
+// A point within this distance (Å) of a sphere is on it, not buried by its ball. The points
+// tested (sphere, circle and triple points) lie on their own spheres to within rounding, far
+// inside this, so no test needs to name the balls a point was built from.
+constexpr double kBuriedTolerance = 1e-7;
+
 struct Ball {
   Vec3 c;
   double R;
+  double buried2;  // (R - kBuriedTolerance)^2: a point closer than this to c is buried
 };
 
 // Balls bucketed in cubic cells (compressed rows), for "which balls are near p".
@@ -85,100 +93,126 @@ class BallCells {
   std::vector<int> order_;
 };
 
-constexpr double kBuriedTolerance = 1e-7;  // Å: a point this close to a sphere is on it
-
-struct Candidate {
-  double distance;
-  Vec3 point;
-  int i, j, k;  // the balls it lies on (-1: none)
+// The SAS geometry around one nearest-E site, shared by every band sample with that site:
+// the balls whose sphere passes by it, their pairwise intersection circles and the exposed
+// triple intersection points (SAS vertices) among them.
+struct Circle {
+  Vec3 m, axis;  // centre and unit normal
+  double rho;    // radius
+  int a, b;      // positions in `near` of the two balls
+};
+struct SiteGeometry {
+  std::vector<int> near;
+  std::vector<Circle> circles;
+  std::vector<Vec3> vertices;
 };
 
 // Exact distance from x (inside the SAS) to the SAS boundary, among the boundary's critical
-// points for x built from the balls `near` (sphere points, the nearest point of pairwise
-// intersection circles, triple intersection points). Only points closer than `best` are
-// considered; returns the smallest distance found (or `best`).
+// points for x built from the balls near x's site (sphere points, the nearest point of
+// pairwise intersection circles, triple intersection points).
 class BoundaryDistance {
  public:
   BoundaryDistance(const BallCells& cells, double max_radius)
       : cells_(cells), max_radius_(max_radius) {}
 
-  // The exposed triple intersection points (SAS vertices) of the balls `near`: they do not
-  // depend on x, so they are found once per site.
-  std::vector<Vec3> exposed_vertices(const std::vector<int>& near) const {
-    std::vector<Vec3> vertices;
-    const std::size_t n = near.size();
+  // The site's geometry, from the balls whose sphere passes within `reach` of it.
+  void build_site(const Vec3& site, double reach, SiteGeometry& g) const {
+    g.near.clear();
+    g.circles.clear();
+    g.vertices.clear();
+    cells_.for_each_near(site, max_radius_ + reach, [&](int b) {
+      const Ball& B = cells_.ball(b);
+      if (std::abs((site - B.c).norm() - B.R) <= reach) g.near.push_back(b);
+      return true;
+    });
+    const std::size_t n = g.near.size();
     for (std::size_t a = 0; a < n; ++a)
       for (std::size_t b = a + 1; b < n; ++b) {
-        const Ball& A = cells_.ball(near[a]);
-        const Ball& B = cells_.ball(near[b]);
-        if ((A.c - B.c).norm() >= A.R + B.R) continue;
-        for (std::size_t c = b + 1; c < n; ++c) {
+        const Ball& A = cells_.ball(g.near[a]);
+        const Ball& B = cells_.ball(g.near[b]);
+        Circle c;
+        if (!circle(A, B, c.m, c.axis, c.rho)) continue;
+        c.a = int(a);
+        c.b = int(b);
+        if (!circle_buried_by_near(c, g.near)) g.circles.push_back(c);
+        for (std::size_t k = b + 1; k < n; ++k) {
           Vec3 p1, p2;
-          if (!triple(A, B, cells_.ball(near[c]), p1, p2)) continue;
+          if (!triple(A, B, cells_.ball(g.near[k]), p1, p2)) continue;
           for (const Vec3& p : {p1, p2})
-            if (exposed(p, near[a], near[b], near[c])) vertices.push_back(p);
+            if (!buried_by_near(p, g.near) && exposed(p)) g.vertices.push_back(p);
         }
       }
-    return vertices;
   }
 
-  // The nearest exposed vertex, then every sphere and circle point closer than that (cheap
-  // geometry; a circle point of (a, b) lies on sphere a, which bounds it from below), tested
-  // for exposure nearest first: the first exposed one is the answer.
-  double operator()(const Vec3& x, const int* near, std::size_t n,
-                    const std::vector<Vec3>& vertices, double best,
-                    std::vector<Candidate>& candidates) const {
-    for (const Vec3& v : vertices) best = std::min(best, (x - v).norm());
-    candidates.clear();
+  // The smallest distance from x to an exposed critical point closer than `best` (or
+  // `best`). The nearest exposed vertex bounds it first; then each sphere point and circle
+  // point closer than the bound is tested for exposure (the near balls bury most, so they
+  // are tried before the full scan) and, when exposed, becomes the bound. A point of circle
+  // (a, b) lies on both spheres, so it is at least max(d_a, d_b) from x (d_a = |R_a -
+  // |x - c_a||): a circle that cannot beat the bound is skipped unbuilt. The answer is the
+  // minimum over the exposed candidates, whatever order they are tried in.
+  double operator()(const Vec3& x, const SiteGeometry& g, double best,
+                    std::vector<double>& sphere_distance) const {
+    for (const Vec3& v : g.vertices) best = std::min(best, (x - v).norm());
+    const std::size_t n = g.near.size();
+    sphere_distance.resize(n);
     for (std::size_t a = 0; a < n; ++a) {
-      const Ball& A = cells_.ball(near[a]);
+      const Ball& A = cells_.ball(g.near[a]);
       const Vec3 w = x - A.c;
       const double len = w.norm();
-      const double da = std::abs(A.R - len);
-      if (da >= best) continue;
-      if (len > 0.0) candidates.push_back({da, A.c + w * (A.R / len), near[a], -1, -1});
-      for (std::size_t b = a + 1; b < n; ++b) {
-        const Ball& B = cells_.ball(near[b]);
-        Vec3 m, axis;
-        double rho;
-        if (!circle(A, B, m, axis, rho)) continue;
-        Vec3 u = x - m;
-        u -= u.dot(axis) * axis;
-        const double ul = u.norm();
-        if (ul < 1e-12)
-          u = axis.unitOrthogonal();
-        else
-          u /= ul;
-        const Vec3 q = m + rho * u;
-        const double d = (x - q).norm();
-        if (d >= best) continue;
-        candidates.push_back({d, q, near[a], near[b], -1});
-      }
+      sphere_distance[a] = std::abs(A.R - len);
+      if (sphere_distance[a] >= best || !(len > 0.0)) continue;
+      const Vec3 q = A.c + w * (A.R / len);
+      if (!buried_by_near(q, g.near) && exposed(q)) best = sphere_distance[a];
     }
-    std::sort(candidates.begin(), candidates.end(),
-              [](const Candidate& l, const Candidate& r) { return l.distance < r.distance; });
-    // The balls near the site bury most candidates, so they are tried before the full scan.
-    auto buried_by_near = [&](const Candidate& c) {
-      for (std::size_t b = 0; b < n; ++b) {
-        if (near[b] == c.i || near[b] == c.j) continue;
-        const Ball& B = cells_.ball(near[b]);
-        const double r = B.R - kBuriedTolerance;
-        if ((c.point - B.c).squaredNorm() < r * r) return true;
-      }
-      return false;
-    };
-    for (const Candidate& c : candidates)
-      if (!buried_by_near(c) && exposed(c.point, c.i, c.j, c.k)) return c.distance;
+    for (const Circle& c : g.circles) {
+      if (sphere_distance[std::size_t(c.a)] >= best || sphere_distance[std::size_t(c.b)] >= best)
+        continue;
+      Vec3 u = x - c.m;
+      u -= u.dot(c.axis) * c.axis;
+      const double ul = u.norm();
+      if (ul < 1e-12)
+        u = c.axis.unitOrthogonal();
+      else
+        u /= ul;
+      const Vec3 q = c.m + c.rho * u;
+      const double d = (x - q).norm();
+      if (d >= best) continue;
+      if (!buried_by_near(q, g.near) && exposed(q)) best = d;
+    }
     return best;
   }
 
  private:
-  bool exposed(const Vec3& q, int i, int j, int k) const {
-    return cells_.for_each_near(q, max_radius_, [&](int b) {
-      if (b == i || b == j || b == k) return true;
+  // Whether a ball of `near` buries q: the cheap first test.
+  bool buried_by_near(const Vec3& q, const std::vector<int>& near) const {
+    for (const int b : near) {
       const Ball& B = cells_.ball(b);
-      const double r = B.R - kBuriedTolerance;
-      return (q - B.c).squaredNorm() >= r * r;
+      if ((q - B.c).squaredNorm() < B.buried2) return true;
+    }
+    return false;
+  }
+
+  // Whether one ball of `near` holds the whole circle: then no point of it is exposed, for
+  // any sample of the site. The farthest circle point from a centre c is at
+  // sqrt(h^2 + (r + rho)^2) (h along the axis, r across it); the margin keeps this a strict
+  // subset of what the per-point test would call buried.
+  bool circle_buried_by_near(const Circle& c, const std::vector<int>& near) const {
+    for (const int b : near) {
+      const Ball& B = cells_.ball(b);
+      const Vec3 v = B.c - c.m;
+      const double h = v.dot(c.axis);
+      const double across = std::sqrt(std::max(0.0, v.squaredNorm() - h * h));
+      const double reach = B.R - kBuriedTolerance - 1e-9;
+      if (reach > 0.0 && h * h + (across + c.rho) * (across + c.rho) < reach * reach) return true;
+    }
+    return false;
+  }
+
+  // Whether no ball buries q.
+  bool exposed(const Vec3& q) const {
+    return cells_.for_each_near(q, max_radius_, [&](int b) {
+      return (q - cells_.ball(b).c).squaredNorm() >= cells_.ball(b).buried2;
     });
   }
 
@@ -240,7 +274,8 @@ Grid ses_field(const Atoms& atoms, double probe, double spacing, const Reporter&
   double max_radius = 0.0;
   for (const Atom& atom : atoms) {
     if (!(atom.radius > 0.0)) continue;
-    balls.push_back({atom.center, atom.radius + probe});
+    const double R = atom.radius + probe;
+    balls.push_back({atom.center, R, (R - kBuriedTolerance) * (R - kBuriedTolerance)});
     max_radius = std::max(max_radius, atom.radius + probe);
   }
   const BallCells cells(balls, max_radius);
@@ -271,44 +306,35 @@ Grid ses_field(const Atoms& atoms, double probe, double spacing, const Reporter&
           band[static_cast<std::size_t>(k)].push_back(static_cast<std::int64_t>(n));
       }
   });
-  std::vector<std::int64_t> samples;
-  for (const auto& plane : band) samples.insert(samples.end(), plane.begin(), plane.end());
+  // Band samples grouped by their nearest E site (sorted by site, then sample): each group
+  // shares one SiteGeometry, built once (there are ~8 samples per site).
+  std::vector<std::pair<std::int64_t, std::int64_t>> samples;  // (site, sample)
+  for (const auto& plane : band)
+    for (const std::int64_t n : plane) samples.emplace_back(edt.nearest[std::size_t(n)], n);
   band.clear();
-  // The balls passing by each distinct site, once per site (compressed rows).
-  std::vector<std::int64_t> sites(samples.size());
-  for (std::size_t s = 0; s < samples.size(); ++s) sites[s] = edt.nearest[std::size_t(samples[s])];
-  std::sort(sites.begin(), sites.end());
-  sites.erase(std::unique(sites.begin(), sites.end()), sites.end());
-  std::vector<std::vector<int>> site_balls(sites.size());
-  std::vector<std::vector<Vec3>> site_vertices(sites.size());
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, sites.size(), 256), [&](const auto& r) {
-    for (std::size_t s = r.begin(); s != r.end(); ++s) {
-      const std::int64_t n = sites[s];
-      const Vec3 site = grid.position(static_cast<int>(n % nx), static_cast<int>((n / nx) % ny),
-                                      static_cast<int>(n / (static_cast<std::int64_t>(nx) * ny)));
-      cells.for_each_near(site, max_radius + near_reach, [&](int b) {
-        const Ball& B = cells.ball(b);
-        if (std::abs((site - B.c).norm() - B.R) <= near_reach) site_balls[s].push_back(b);
-        return true;
-      });
-      site_vertices[s] = boundary_distance.exposed_vertices(site_balls[s]);
-    }
-  });
+  tbb::parallel_sort(samples.begin(), samples.end());
+  std::vector<std::size_t> group_start;  // where each site's samples begin, then the end
+  for (std::size_t s = 0; s < samples.size(); ++s)
+    if (s == 0 || samples[s].first != samples[s - 1].first) group_start.push_back(s);
+  group_start.push_back(samples.size());
+  const auto position = [&](std::int64_t n) {
+    const std::int64_t plane = static_cast<std::int64_t>(nx) * ny;
+    return grid.position(static_cast<int>(n % nx), static_cast<int>((n / nx) % ny),
+                         static_cast<int>(n / plane));
+  };
   reporter.progress("distance transform", 0.7);
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, samples.size(), 512), [&](const auto& r) {
-    std::vector<Candidate> candidates;
-    for (std::size_t s = r.begin(); s != r.end(); ++s) {
-      const std::size_t n = static_cast<std::size_t>(samples[s]);
-      const std::size_t slot = static_cast<std::size_t>(
-          std::lower_bound(sites.begin(), sites.end(), edt.nearest[n]) - sites.begin());
-      const std::vector<int>& near = site_balls[slot];
-      const int i = static_cast<int>(n % std::size_t(nx));
-      const int j = static_cast<int>((n / std::size_t(nx)) % std::size_t(ny));
-      const int k = static_cast<int>(n / (std::size_t(nx) * std::size_t(ny)));
-      const double d =
-          boundary_distance(grid.position(i, j, k), near.data(), near.size(), site_vertices[slot],
-                            std::sqrt(edt.squared_distance[n]), candidates);
-      grid.values[n] = d - probe;
+  const std::size_t groups = group_start.size() - 1;
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, groups, 64), [&](const auto& r) {
+    SiteGeometry site;
+    std::vector<double> sphere_distance;
+    for (std::size_t g = r.begin(); g != r.end(); ++g) {
+      boundary_distance.build_site(position(samples[group_start[g]].first), near_reach, site);
+      for (std::size_t s = group_start[g]; s != group_start[g + 1]; ++s) {
+        const std::size_t n = static_cast<std::size_t>(samples[s].second);
+        const double d = boundary_distance(position(samples[s].second), site,
+                                           std::sqrt(edt.squared_distance[n]), sphere_distance);
+        grid.values[n] = d - probe;
+      }
     }
   });
   reporter.progress("distance transform", 1.0);
