@@ -74,7 +74,13 @@ void ball_union_onto(const Atoms& atoms, double grow, Grid& grid, const Reporter
           const double d2yz = dy * dy + dz * dz;
           for (int i = i0; i <= i1; ++i) {
             const double dx = grid.origin.x() + i * grid.spacing.x() - atom.center.x();
-            const double value = radius - std::sqrt(dx * dx + d2yz);
+            const double d2 = dx * dx + d2yz;
+            // value = radius - sqrt(d2) beats row[i] only if sqrt(d2) < radius - row[i]: most
+            // samples (inside several balls) are rejected on the squares, with a margin far
+            // beyond rounding so the exact comparison decides every close call.
+            const double gap = radius - row[i];
+            if (!(gap > 0.0) || d2 > gap * gap * (1.0 + 1e-9)) continue;
+            const double value = radius - std::sqrt(d2);
             if (value > row[i]) row[i] = value;
           }
         }
