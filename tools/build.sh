@@ -2,8 +2,9 @@
 # One entry point for a fresh Debian 12 machine:
 #   tools/build.sh demo   install packages, build (Release), mesh the bundled molecule
 #   tools/build.sh test   install packages, build (Release), run every test (slow ones too),
-#                         then the reader tests and fuzz-corpus replays under ASan/UBSan
-#                         (build-asan-readers; MOLMESH_SANITIZE=readers, the default);
+#                         then the library's own tests (readers, geometry, volume, surface,
+#                         processing) and fuzz-corpus replays under ASan/UBSan
+#                         (build-asan-library; MOLMESH_SANITIZE=library, the default);
 #                         MOLMESH_SANITIZE=1 runs the whole fast suite and bounded fuzz runs
 #                         under them instead (build-asan), 0 neither (docs/testing.md)
 #   tools/build.sh build  install packages and build only
@@ -37,9 +38,10 @@ build() {
 # UndefinedBehaviorSanitizer and libstdc++ assertions, with clang so the reader fuzz targets
 # link libFuzzer; any sanitizer report fails (halt on the first one). Leaks inside Debian
 # libraries are suppressed in tools/sanitizers/lsan.supp, nothing else.
-#   readers (MOLMESH_SANITIZE=readers, what `test` runs by default, so CI): only the library,
-#     the reader tests (molmesh_tests_io_readers) and the fuzz targets, in build-asan-readers;
-#     runs the reader tests and the fuzz-corpus replays.
+#   library (MOLMESH_SANITIZE=library, what `test` runs by default, so CI): only the library,
+#     the tests that need nothing else (target sanitizer_tests: the readers and the stages
+#     listed in tests/CMakeLists.txt, _library_stages) and the fuzz targets, in
+#     build-asan-library; runs those tests and the fuzz-corpus replays.
 #   full (MOLMESH_SANITIZE=1): everything but benchmarks and Python, in build-asan; runs the
 #     fast suite, the fuzz-corpus replays and a bounded fuzz run per reader. Too slow for CI's
 #     30 min on 2 cores (docs/testing.md has the measurements).
@@ -62,14 +64,15 @@ sanitizer_configure() {
     -DMOLMESH_BUILD_BENCHMARKS=OFF -DMOLMESH_BUILD_PYTHON=OFF -DMOLMESH_FUZZ=ON
 }
 
-sanitize_readers() {
-  local dir="${MOLMESH_ASAN_READERS_BUILD_DIR:-$here/build-asan-readers}"
+sanitize_library() {
+  local dir="${MOLMESH_ASAN_LIBRARY_BUILD_DIR:-$here/build-asan-library}"
   sanitizer_configure "$dir"
-  cmake --build "$dir" -j "$jobs" --target reader_tests
-  local start=$SECONDS
+  cmake --build "$dir" -j "$jobs" --target sanitizer_tests
+  local start=$SECONDS labels
+  labels="$(cat "$dir/sanitizer_test_labels.txt")"  # written by tests/CMakeLists.txt
   (cd "$dir" && sanitizer_env &&
-    ctest -L '^(io_readers|fuzz)$' --output-on-failure -j "$jobs" --timeout 600)
-  echo "molmesh: reader sanitizer leg tests took $((SECONDS - start)) s"
+    ctest -L "$labels" --output-on-failure -j "$jobs" --timeout 600)
+  echo "molmesh: library sanitizer leg tests took $((SECONDS - start)) s"
 }
 
 sanitize_full() {
@@ -97,11 +100,11 @@ case "$mode" in
     ;;
   test)
     (cd "$build_dir" && ctest --output-on-failure -j "$jobs" --timeout 1500)
-    case "${MOLMESH_SANITIZE:-readers}" in
+    case "${MOLMESH_SANITIZE:-library}" in
       1) sanitize_full ;;
       0) ;;
-      readers) sanitize_readers ;;
-      *) echo "MOLMESH_SANITIZE: 0, 1 or readers" >&2; exit 2 ;;
+      library) sanitize_library ;;
+      *) echo "MOLMESH_SANITIZE: 0, 1 or library" >&2; exit 2 ;;
     esac
     ;;
   *) echo "usage: tools/build.sh [demo|test|build]" >&2; exit 2 ;;
