@@ -208,6 +208,8 @@ const OptionTable<TetMeshOptions>& tetmesh_table() {
             doc_of(specs.max_volume));
     t.field(std::string(specs.size_factor.name), MOLMESH_FIELD(size_factor),
             doc_of(specs.size_factor));
+    t.field(std::string(specs.surface_size_ratio.name), MOLMESH_FIELD(surface_size_ratio),
+            doc_of(specs.surface_size_ratio));
     t.field(std::string(specs.tetgen_switches.name), MOLMESH_FIELD(tetgen_switches),
             doc_of(specs.tetgen_switches));
     return t;

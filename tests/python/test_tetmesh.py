@@ -119,6 +119,7 @@ def test_defaults_and_ranges_are_the_clis(tmp_path, cli_full):
     defaults, cli = molmesh.defaults("tetmesh"), cli_stats["parameters"]
     assert defaults["domain"] == cli["domain"] == "full"
     for keyword, key in [("sphere_ratio", "sphere_ratio"), ("size_factor", "size_factor"),
+                         ("surface_size_ratio", "surface_size_ratio"),
                          ("sphere_subdivisions", "outer_sphere_subdivisions"),
                          ("max_radius_edge", "max_radius_edge_ratio"),
                          ("min_dihedral", "min_dihedral_deg")]:
@@ -128,7 +129,8 @@ def test_defaults_and_ranges_are_the_clis(tmp_path, cli_full):
                                   ("sphere_subdivisions", "--sphere-subdivisions", 8),
                                   ("max_radius_edge", "--max-radius-edge", 0.999),
                                   ("min_dihedral", "--min-dihedral", 70.001),
-                                  ("size_factor", "--size-factor", 1000.001)]:
+                                  ("size_factor", "--size-factor", 1000.001),
+                                  ("surface_size_ratio", "--surface-size-ratio", 100.001)]:
         with pytest.raises(molmesh.Error, match=f"`{keyword}`"):
             molmesh.tetmesh(surface, **{keyword: beyond})
         run_cli("tetmesh", out / "s.ply", "-o", tmp_path / "x.m", flag, beyond, expect=2)

@@ -118,6 +118,8 @@ TEST(TetgenInput, OptionValuesAreRangeChecked) {
                                   with([&](TetMeshOptions& o) { o.max_radius_edge_ratio = nan; }),
                                   with([&](TetMeshOptions& o) { o.sphere_ratio = INFINITY; }),
                                   with([&](TetMeshOptions& o) { o.size_factor = nan; }),
+                                  with([&](TetMeshOptions& o) { o.surface_size_ratio = 0.0; }),
+                                  with([&](TetMeshOptions& o) { o.surface_size_ratio = nan; }),
                                   with([&](TetMeshOptions& o) { o.max_volume = -1.0; })}) {
     EXPECT_THROW(o.validate(), Error);
     EXPECT_THROW(tetrahedralize(ion, {}, o), Error);

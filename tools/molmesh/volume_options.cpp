@@ -34,6 +34,8 @@ void add_volume_options(CLI::App& cmd, VolumeCliOptions& options,
   add_spec_option(cmd, specs.min_dihedral, options.tet.min_dihedral_deg)->capture_default_str();
   add_spec_option(cmd, specs.max_volume, options.max_volume)->type_name("V");
   add_spec_option(cmd, specs.size_factor, options.tet.size_factor)->capture_default_str();
+  add_spec_option(cmd, specs.surface_size_ratio, options.tet.surface_size_ratio)
+      ->capture_default_str();
 }
 
 void add_tetgen_switches_option(CLI::App& cmd, std::string& switches) {

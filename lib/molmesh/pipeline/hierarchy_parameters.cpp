@@ -60,6 +60,7 @@ std::map<std::string, std::string> hierarchy_parameters(
   p["min_dihedral_deg"] = text(tet.min_dihedral_deg);
   p["max_volume"] = tet.max_volume ? text(*tet.max_volume) : "none";
   p["size_factor"] = text(tet.size_factor);
+  p["surface_size_ratio"] = text(tet.surface_size_ratio);
   p["size_growth"] = text(options.size_growth);
   p["renumbering"] = options.renumber ? "reverse Cuthill-McKee" : "none";
   if (!report.levels.empty()) p["tetgen_switches"] = report.levels.front().tetmesh.tetgen_switches;

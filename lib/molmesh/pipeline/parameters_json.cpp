@@ -40,6 +40,7 @@ nlohmann::json tetmesh_parameters_json(const TetMeshOptions& options,
   if (options.outer_radius) j["outer_radius"] = *options.outer_radius;
   if (options.max_volume) j["max_volume"] = *options.max_volume;
   j["size_factor"] = options.size_factor;
+  j["surface_size_ratio"] = options.surface_size_ratio;
   j["active_site_spheres"] = options.active_site.size();
   return j;
 }

@@ -21,12 +21,14 @@ struct TetMeshOptionSpecs {
   OptionSpec min_dihedral;
   OptionSpec max_volume;
   OptionSpec size_factor;
+  OptionSpec surface_size_ratio;
   OptionSpec tetgen_switches;
 
   // Every entry, in the order above.
-  constexpr std::array<const OptionSpec*, 10> all() const {
-    return {&domain,          &sphere_ratio, &outer_radius, &sphere_subdivisions, &active_site,
-            &max_radius_edge, &min_dihedral, &max_volume,   &size_factor,         &tetgen_switches};
+  constexpr std::array<const OptionSpec*, 11> all() const {
+    return {&domain,      &sphere_ratio,       &outer_radius,   &sphere_subdivisions,
+            &active_site, &max_radius_edge,    &min_dihedral,   &max_volume,
+            &size_factor, &surface_size_ratio, &tetgen_switches};
   }
 };
 
@@ -62,10 +64,16 @@ inline constexpr TetMeshOptionSpecs kTetMeshOptionSpecs{
                    "TetGen -a: largest tetrahedron volume in Å^3 (default: unbounded)",
                    OptionRange{0.0, std::numeric_limits<double>::infinity(), true}},
     .size_factor = {"size_factor", "size_factor",
-                    "Size field (TetGen -m) times this factor: 1.5 edge lengths at the "
-                    "molecular surface, 0.09 R (r/R)^1.2 in the solvent (R the molecule's "
-                    "volume-equivalent radius); smaller: finer everywhere; 0: no grading",
+                    "Size field (TetGen -m) times this factor: `surface_size_ratio` edge lengths "
+                    "at the molecular surface, 0.09 R (r/R)^1.2 in the solvent (R the "
+                    "molecule's volume-equivalent radius); smaller: finer everywhere; 0: no "
+                    "grading",
                     OptionRange{0.0, kMaxSizeFactor, false}},
+    .surface_size_ratio = {"surface_size_ratio", "surface_size_ratio",
+                           "Size field at the molecular surface, in mean edge lengths of each "
+                           "vertex's star (before `size_factor`); 0.6 for solvation energies "
+                           "of proteins with point charges (docs/surface.md)",
+                           OptionRange{0.0, kMaxSurfaceSizeRatio, true}},
     .tetgen_switches = {"tetgen_switches", "tetgen_switches",
                         "Expert: TetGen switches replacing the ones above (e.g. pYq1.5/15); "
                         "molmesh adds p, z, n and Q when missing. Without Y TetGen may split the "

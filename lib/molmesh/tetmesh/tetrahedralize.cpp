@@ -417,6 +417,10 @@ void TetMeshOptions::validate() const {
   require(std::isfinite(size_factor) && size_factor >= 0.0 && size_factor <= kMaxSizeFactor,
           "the size factor (`size_factor`) must be a finite number in [0, " +
               format_number(kMaxSizeFactor) + "] (0: no grading)");
+  require(std::isfinite(surface_size_ratio) && surface_size_ratio > 0.0 &&
+              surface_size_ratio <= kMaxSurfaceSizeRatio,
+          "the surface size ratio (`surface_size_ratio`) must be a finite number in (0, " +
+              format_number(kMaxSurfaceSizeRatio) + "]");
   require(std::isfinite(max_memory_bytes) && max_memory_bytes > 0.0,
           "the memory limit (`max_memory_bytes`) must be positive");
   for (const auto& s : active_site)
@@ -487,7 +491,7 @@ static TetMesh tetrahedralize_centred(const SurfaceMesh& surface, const Atoms& a
     // The size rule (size_field.hpp): surface vertices from their edges, the outer sphere's
     // from the far-field law (its triangles bound the tetrahedra resting on it anyway).
     input_sizes = mean_edge_lengths(surface);
-    for (double& h : input_sizes) h *= kSurfaceSizeRatio;
+    for (double& h : input_sizes) h *= options.surface_size_ratio;
     input_sizes.resize(static_cast<std::size_t>(n_in),
                        far_field_size(report.outer_radius, field_radius));
     for (double& h : input_sizes) h *= options.size_factor;

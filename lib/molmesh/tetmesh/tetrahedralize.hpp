@@ -14,6 +14,7 @@
 #include "molmesh/core/reporter.hpp"
 #include "molmesh/core/resource_limits.hpp"
 #include "molmesh/surface/surface_mesh.hpp"
+#include "molmesh/tetmesh/size_field.hpp"
 #include "molmesh/tetmesh/tet_mesh.hpp"
 
 namespace molmesh {
@@ -39,6 +40,7 @@ inline constexpr double kMinRadiusEdgeRatio = 1.0;     // TetGen may not termina
 inline constexpr double kMaxRadiusEdgeRatio = 1e3;     // max_radius_edge_ratio upper bound
 inline constexpr double kMaxMinDihedralDeg = 70.0;     // min_dihedral_deg in [0, this]
 inline constexpr double kMaxSizeFactor = 1e3;          // size_factor in [0, this]
+inline constexpr double kMaxSurfaceSizeRatio = 100.0;  // surface_size_ratio in (0, this]
 
 struct TetMeshOptions {
   Domain domain = Domain::full;
@@ -62,6 +64,11 @@ struct TetMeshOptions {
   // energy error of a 1/r field. 0 switches grading off: then only the radius-edge bound
   // grades the mesh, which leaves the tetrahedra next to the surface several times larger.
   double size_factor = 1.0;
+  // The size at a molecular-surface vertex, in mean edge lengths of its star (before
+  // size_factor). 1.5 (size_field.hpp) serves rates and the Born ion; a protein's solvation
+  // energy with point charges needs the dielectric boundary finer: 0.6 put 1a1p's SES within
+  // 4 % of APBS at a fifth of the unknowns `size_factor` 0.4 needs (docs/surface.md).
+  double surface_size_ratio = kSurfaceSizeRatio;
   // Expert override: replaces every switch molmesh would choose (besides Q, which is
   // always added so TetGen stays silent). Must keep the meaning of the result a PLC mesh
   // with region attributes, e.g. "pq1.5/15YA".
