@@ -232,6 +232,34 @@ TEST(Tetrahedralize, RejectsBadInputWithActionableErrors) {
   EXPECT_THROW(tetrahedralize(ion, atoms_at({Vec3::Zero()}), o), Error);
 }
 
+// surface_size_ratio sets the size field at the molecular surface, in mean edge lengths of
+// each vertex's star. Inside the molecule nothing else sizes the mesh, so a smaller ratio
+// must refine the interior and the tetrahedra along the surface. (In a small ion's solvent
+// the far-field law, 0.09 r there, is finer than either ratio.)
+TEST(Tetrahedralize, SurfaceSizeRatioRefinesAlongTheSurface) {
+  const SurfaceMesh ion = icosphere(Vec3::Zero(), 3.0, 3);
+  auto mean_edge_at_surface = [](const TetMesh& mesh) {
+    double total = 0.0;
+    std::size_t count = 0;
+    for (const auto& t : mesh.tetrahedra) {
+      bool touches_surface = false;
+      for (int v : t) touches_surface = touches_surface || mesh.vertex_markers[v] != kNoMarker;
+      if (!touches_surface) continue;
+      for (int a = 0; a < 4; ++a)
+        for (int b = a + 1; b < 4; ++b, ++count)
+          total += (mesh.points[t[a]] - mesh.points[t[b]]).norm();
+    }
+    return total / static_cast<double>(count);
+  };
+  TetMeshOptions o;
+  o.domain = Domain::interior;
+  const TetMesh coarse = tetrahedralize(ion, {}, o);
+  o.surface_size_ratio = 0.6;
+  const TetMesh fine = tetrahedralize(ion, {}, o);
+  EXPECT_GT(fine.tetrahedra.size(), 3 * coarse.tetrahedra.size());
+  EXPECT_LT(mean_edge_at_surface(fine), 0.85 * mean_edge_at_surface(coarse));
+}
+
 TEST(Tetrahedralize, VolumeBoundAndExpertSwitches) {
   const SurfaceMesh ion = icosphere(Vec3::Zero(), 3.0, 2);
   TetMeshOptions o;
