@@ -247,6 +247,34 @@ TEST(VolumeIo, DxMoreValuesThanItemsOnLaterLines) {
             (std::vector<double>{1, 2}));
 }
 
+TEST(VolumeIo, DxValuesBeforeTheDataArrayAreAnError) {
+  // Numbers on a header line were skipped like an unknown keyword: a stray line between
+  // the deltas and the array, or ahead of the gridpositions object, read as a valid grid.
+  const std::string counts = "object 1 class gridpositions counts 2 1 1\n";
+  const std::string geometry = "origin 0 0 0\ndelta 1 0 0\ndelta 0 1 0\ndelta 0 0 1\n";
+  const std::string array =
+      "object 3 class array type double rank 0 items 2 data follows\n1 2\n" + kDxTail;
+  const char* message = "values before the data array";
+  expect_input_error(
+      [&] { read_volume(write_text("stray.dx", counts + geometry + "1.0 2.0 3.0\n" + array)); },
+      {"stray.dx:6:", message, "'origin x y z'"});
+  expect_input_error(
+      [&] { read_volume(write_text("first.dx", "# APBS\n-1 2\n" + counts + geometry + array)); },
+      {"first.dx:2:", message});
+  expect_input_error(
+      [&] {
+        read_volume(write_text(
+            "conn.dx",
+            counts + geometry + "object 2 class gridconnections counts 2 1 1\n+3\n" + array));
+      },
+      {"conn.dx:7:", message});
+  // Comments stay comments, whole-line or after a keyword's fields.
+  EXPECT_EQ(read_volume(write_text("comments.dx", "# 1 2 3\n" + counts + "  # 4.5\n" + geometry +
+                                                      "#\t6 7 8\n" + array))
+                .values,
+            (std::vector<double>{1, 2}));
+}
+
 // NSYMBT (word 24) set in the header only, the file built without an extended header.
 std::string with_nsymbt(std::string bytes, std::int32_t nsymbt) {
   std::memcpy(bytes.data() + 4 * 23, &nsymbt, 4);

@@ -34,12 +34,21 @@ Grid parse_dx(std::string_view text, const std::string& name) {
     const auto f = split_fields(line);
     if (f.empty()) continue;
     const std::size_t n = lines.line_number();
-    // Numbers on a line of their own after the data are more values than `items`: the
-    // loop below stops at the count, and they used to be skipped like an unknown keyword.
-    if (have_data && parse_double(f[0]))
+    // A line of numbers outside the data array used to be skipped like an unknown keyword.
+    // After the data they are more values than `items` (the loop below stops at the
+    // count); before it they belong to no object (a fourth delta, an origin without its
+    // keyword, values ahead of their array), and reading on would leave the grid's
+    // geometry or data other than the file meant.
+    if (parse_double(f[0])) {
+      if (have_data)
+        throw InputError(name, n,
+                         "more values than the " + std::to_string(expected) +
+                             " items declared on line " + std::to_string(data_line));
       throw InputError(name, n,
-                       "more values than the " + std::to_string(expected) +
-                           " items declared on line " + std::to_string(data_line));
+                       "values before the data array: numbers belong after an 'object N class "
+                       "array ... data follows' line, and header lines start with their keyword "
+                       "('origin x y z', 'delta dx dy dz')");
+    }
     if (f[0] == "object" && f.size() >= 4 && f[2] == "class" && f[3] == "gridpositions") {
       if (f.size() != 8 || f[4] != "counts")
         throw InputError(name, n, "expected 'object 1 class gridpositions counts nx ny nz'");
