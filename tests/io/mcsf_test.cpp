@@ -3,9 +3,15 @@
 #include "molmesh/io/mcsf.hpp"
 
 #include <gtest/gtest.h>
+#include <tbb/global_control.h>
 
+#include <algorithm>
+#include <array>
 #include <filesystem>
 #include <map>
+#include <sstream>
+#include <string>
+#include <vector>
 
 #include "io_test_support.hpp"
 #include "molmesh/geometry/predicates.hpp"
@@ -75,6 +81,112 @@ TEST(Mcsf, FullMeshMolecularSurfaceIsInteriorFaceType) {
   const std::string text = test::slurp(path);
   EXPECT_EQ(text.find("mcsf_begin=1;"), text.find("mcsf_begin"));
   EXPECT_NE(text.find("mcsf_end=1;"), std::string::npos);
+}
+
+// A block of n^3 cubes, six tets each (Kuhn: every path from corner 000 to 111), so half
+// the tets are negatively oriented; 13^3 = 2197 points, more than the writer's first-level
+// buckets (at most ~1024) hold one vertex each. One extra tet on an interior face makes a
+// face that three tets share.
+TetMesh kuhn_block(int n) {
+  TetMesh m;
+  const auto id = [n](int i, int j, int k) { return (i * (n + 1) + j) * (n + 1) + k; };
+  for (int i = 0; i <= n; ++i)
+    for (int j = 0; j <= n; ++j)
+      for (int k = 0; k <= n; ++k) m.points.emplace_back(i, j, k);
+  const std::array<std::array<int, 3>, 6> paths{
+      {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}}};
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j)
+      for (int k = 0; k < n; ++k)
+        for (const auto& path : paths) {
+          std::array<int, 3> c{i, j, k};
+          Tetrahedron t;
+          t[0] = id(c[0], c[1], c[2]);
+          for (int step = 0; step < 3; ++step) {
+            ++c[static_cast<std::size_t>(path[static_cast<std::size_t>(step)])];
+            t[step + 1] = id(c[0], c[1], c[2]);
+          }
+          m.tetrahedra.push_back(t);
+        }
+  m.points.emplace_back(0.5, 0.5, -3.0);
+  const Tetrahedron& inner = m.tetrahedra[6 * (n * n + n + 1) + 2];
+  m.tetrahedra.push_back({inner[0], inner[1], inner[2], static_cast<int>(m.points.size()) - 1});
+  return m;
+}
+
+TEST(Mcsf, FaceTypesArePerFaceAndIndependentOfTheThreadCount) {
+  TetMesh mesh = kuhn_block(12);
+  std::map<std::array<int, 3>, int> uses;
+  const auto sorted = [](std::array<int, 3> f) {
+    std::sort(f.begin(), f.end());
+    return f;
+  };
+  for (const auto& t : mesh.tetrahedra)
+    for (int k = 0; k < 4; ++k) {
+      std::array<int, 3> f{};
+      for (int c = 0, j = 0; c < 4; ++c)
+        if (c != k) f[static_cast<std::size_t>(j++)] = t[c];
+      ++uses[sorted(f)];
+    }
+  ASSERT_EQ(std::count_if(uses.begin(), uses.end(), [](const auto& u) { return u.second == 3; }),
+            1);
+  // Boundary faces at x = 0 are the active site, at x = 12 the outer sphere, the rest are
+  // unmarked; one interior face carries a marker too (as the molecular surface of a full
+  // mesh does) and must stay interior.
+  std::map<std::array<int, 3>, int> marker;
+  for (const auto& [f, n] : uses) {
+    const auto x = [&](std::size_t c) { return mesh.points[f[c]].x(); };
+    int m = -1;
+    if (n == 1 && x(0) == 0 && x(1) == 0 && x(2) == 0) m = markers::kActiveSite;
+    if (n == 1 && x(0) == 12 && x(1) == 12 && x(2) == 12) m = markers::kOuterSphere;
+    if (n == 2 && marker.empty()) m = markers::kMolecularSurface;
+    if (m < 0) continue;
+    marker[f] = m;
+    mesh.boundary_faces.push_back({f[0], f[1], f[2]});
+    mesh.boundary_face_markers.push_back(m);
+  }
+  const McsfFaceTypes types;
+  const auto path = test::scratch_dir() / "kuhn.m";
+  {
+    tbb::global_control one(tbb::global_control::max_allowed_parallelism, 1);
+    write_mcsf(path, mesh, types);
+  }
+  const std::string serial = test::slurp(path);
+  write_mcsf(path, mesh, types);
+  EXPECT_EQ(test::slurp(path), serial);
+
+  std::istringstream in(serial.substr(serial.find("simp=[")));
+  std::string line;
+  std::getline(in, line);
+  std::size_t lines = 0;
+  std::map<int, std::size_t> seen;
+  while (std::getline(in, line) && line != "];") {
+    if (line.empty() || line[0] == '%') continue;
+    std::istringstream fields(line);
+    int id = 0, group = 0, material = 0;
+    std::array<int, 4> type{}, v{};
+    fields >> id >> group >> material >> type[0] >> type[1] >> type[2] >> type[3] >> v[0] >> v[1] >>
+        v[2] >> v[3];
+    ASSERT_TRUE(fields) << line;
+    for (int k = 0; k < 4; ++k) {
+      std::array<int, 3> f{};
+      for (int c = 0, j = 0; c < 4; ++c)
+        if (c != k) f[static_cast<std::size_t>(j++)] = v[static_cast<std::size_t>(c)];
+      f = sorted(f);
+      const auto it = marker.find(f);
+      const int want = uses.at(f) >= 2                      ? 0
+                       : it == marker.end()                 ? types.other
+                       : it->second == markers::kActiveSite ? types.active_site
+                                                            : types.outer_sphere;
+      ASSERT_EQ(type[static_cast<std::size_t>(k)], want) << line << " face " << k;
+      ++seen[want];
+    }
+    ++lines;
+  }
+  EXPECT_EQ(lines, mesh.tetrahedra.size());
+  EXPECT_EQ(seen[types.active_site], 2u * 12 * 12);
+  EXPECT_EQ(seen[types.outer_sphere], 2u * 12 * 12);
+  EXPECT_EQ(seen[types.other], 4u * 2 * 12 * 12 + 3);
 }
 
 TEST(Mcsf, ReadsApbsExampleMesh) {
