@@ -2,8 +2,8 @@
 # One entry point for a fresh Debian 12 machine:
 #   tools/build.sh demo   install packages, build (Release), mesh the bundled molecule
 #   tools/build.sh test   install packages, build (Release), run every test (slow ones too),
-#                         then the library's own tests (readers, geometry, volume, surface,
-#                         processing) and fuzz-corpus replays under ASan/UBSan
+#                         then the library's own tests (every stage's but the CLI's and
+#                         molmesh-petsc's) and fuzz-corpus replays under ASan/UBSan
 #                         (build-asan-library; MOLMESH_SANITIZE=library, the default);
 #                         MOLMESH_SANITIZE=1 runs the whole fast suite and bounded fuzz runs
 #                         under them instead (build-asan), 0 neither (docs/testing.md)
@@ -38,9 +38,9 @@ build() {
 # UndefinedBehaviorSanitizer and libstdc++ assertions, with clang so the reader fuzz targets
 # link libFuzzer; any sanitizer report fails (halt on the first one). Leaks inside Debian
 # libraries are suppressed in tools/sanitizers/lsan.supp, nothing else.
-#   library (MOLMESH_SANITIZE=library, what `test` runs by default, so CI): only the library,
-#     the tests that need nothing else (target sanitizer_tests: the readers and the stages
-#     listed in tests/CMakeLists.txt, _library_stages) and the fuzz targets, in
+#   library (MOLMESH_SANITIZE=library, what `test` runs by default, so CI): only the library
+#     (with the solvers), the tests that need no CLI (target sanitizer_tests: the readers and
+#     the stages listed in tests/CMakeLists.txt, _library_stages) and the fuzz targets, in
 #     build-asan-library; runs those tests and the fuzz-corpus replays.
 #   full (MOLMESH_SANITIZE=1): everything but benchmarks and Python, in build-asan; runs the
 #     fast suite, the fuzz-corpus replays and a bounded fuzz run per reader. Too slow for CI's

@@ -4,14 +4,12 @@
 #include <gtest/gtest.h>
 #include <tetgen.h>
 
-#include <filesystem>
 #include <string>
 
 #include "molmesh/core/error.hpp"
 #include "molmesh/tetmesh/outer_sphere.hpp"
 #include "molmesh/tetmesh/tetgen_plc.hpp"
 #include "molmesh/tetmesh/tetrahedralize.hpp"
-#include "support/cli.hpp"
 
 namespace molmesh {
 namespace {
@@ -136,23 +134,6 @@ TEST(TetgenInput, TinySizeFactorIsRefusedByTheMemoryEstimate) {
   EXPECT_NE(message.find("`max_memory_bytes`"), std::string::npos) << message;
   EXPECT_NE(message.find("`size_factor`"), std::string::npos) << message;
   EXPECT_EQ(message.find("--"), std::string::npos) << message;  // no CLI flag in the library
-}
-
-TEST(TetgenInput, CliFas2AtBlobbyness2IsNoCrash) {
-  // The reproducer: TetGen died with SIGSEGV (double free in its cleanup).
-  const auto dir = std::filesystem::temp_directory_path() /
-                   ("molmesh_tetgen_fas2_" + std::to_string(::getpid()));
-  std::filesystem::create_directories(dir);
-  const auto r =
-      testing::run_cli("-q " + std::string("tetmesh ") + MOLMESH_TEST_DATA_DIR +
-                       "/fas2.pqr --blobbyness -2 --domain full -o " + (dir / "f.m").string());
-  EXPECT_EQ(r.signal, 0) << r.err;
-  EXPECT_TRUE(r.exit_code == 0 || r.exit_code == 1) << r.exit_code << " " << r.err;
-  if (r.exit_code != 0) {
-    EXPECT_NE(r.err.find("molmesh: error:"), std::string::npos) << r.err;
-    EXPECT_FALSE(std::filesystem::exists(dir / "f.m"));
-  }
-  std::filesystem::remove_all(dir);
 }
 
 }  // namespace

@@ -1,5 +1,6 @@
 // `molmesh tetmesh` end to end on a surface file: outputs in every format, --stats JSON,
-// and a bad output name rejected with exit code 2 before any work.
+// a bad output name rejected with exit code 2 before any work, and fas2 at B = -2 (where
+// TetGen once crashed) meshed or refused cleanly.
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -55,6 +56,23 @@ TEST(CliTetmesh, SurfaceFileToEveryFormatWithStats) {
   // A single surface with no atoms but ratio sizing works; an enclosed-too-small sphere fails.
   EXPECT_EQ(run("tetmesh " + surf + " --outer-radius 2 -o " + (dir / "y.m").string()), 1);
   fs::remove_all(dir);
+}
+
+TEST(CliTetmesh, Fas2AtBlobbyness2IsNoCrash) {
+  // Issue 18's reproducer: TetGen died with SIGSEGV (double free in its cleanup).
+  const auto dir = std::filesystem::temp_directory_path() /
+                   ("molmesh_tetgen_fas2_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  const auto r =
+      testing::run_cli("-q " + std::string("tetmesh ") + MOLMESH_TEST_DATA_DIR +
+                       "/fas2.pqr --blobbyness -2 --domain full -o " + (dir / "f.m").string());
+  EXPECT_EQ(r.signal, 0) << r.err;
+  EXPECT_TRUE(r.exit_code == 0 || r.exit_code == 1) << r.exit_code << " " << r.err;
+  if (r.exit_code != 0) {
+    EXPECT_NE(r.err.find("molmesh: error:"), std::string::npos) << r.err;
+    EXPECT_FALSE(std::filesystem::exists(dir / "f.m"));
+  }
+  std::filesystem::remove_all(dir);
 }
 
 }  // namespace
