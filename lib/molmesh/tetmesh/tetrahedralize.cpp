@@ -24,6 +24,7 @@
 #include "molmesh/tetmesh/molecule_size.hpp"
 #include "molmesh/tetmesh/outer_sphere.hpp"
 #include "molmesh/tetmesh/size_field.hpp"
+#include "molmesh/tetmesh/tetgen_output.hpp"
 #include "molmesh/tetmesh/tetgen_plc.hpp"
 
 namespace molmesh {
@@ -39,25 +40,6 @@ constexpr double kBytesPerTetrahedron = 400.0;
 constexpr std::size_t kMaxHolePoints = 16;
 
 using Clock = std::chrono::steady_clock;
-
-struct FaceKey {
-  int a, b, c;  // sorted
-  bool operator==(const FaceKey&) const = default;
-};
-FaceKey face_key(int a, int b, int c) {
-  if (a > b) std::swap(a, b);
-  if (b > c) std::swap(b, c);
-  if (a > b) std::swap(a, b);
-  return {a, b, c};
-}
-struct FaceKeyHash {
-  std::size_t operator()(const FaceKey& k) const {
-    std::uint64_t h = static_cast<std::uint32_t>(k.a);
-    h = h * 0x9E3779B97F4A7C15ull ^ static_cast<std::uint32_t>(k.b);
-    h = h * 0x9E3779B97F4A7C15ull ^ static_cast<std::uint32_t>(k.c);
-    return static_cast<std::size_t>(h ^ (h >> 29));
-  }
-};
 
 struct PointKeyHash {
   std::size_t operator()(const std::array<std::uint64_t, 3>& k) const {
@@ -308,71 +290,6 @@ std::string tetgen_switches(const TetMeshOptions& options, bool graded) {
   return switches;
 }
 
-using FacetMarkers = std::unordered_map<FaceKey, int, FaceKeyHash>;
-
-Vec3 tetgen_point(const tetgenio& out, int i) {
-  return Vec3(out.pointlist[3 * i], out.pointlist[3 * i + 1], out.pointlist[3 * i + 2]);
-}
-
-// The face opposite corner k, ordered so the normal points out of the tet.
-Triangle face_opposite(const Tetrahedron& t, int k) {
-  return Triangle{t[kTetFaces[k][0]], t[kTetFaces[k][1]], t[kTetFaces[k][2]]};
-}
-
-// Regions: tets connected across faces that are not on an input facet. Each is classified
-// by the winding number of the molecular surface at one tet's centroid, so cavities
-// (inside the surface but outside the molecule) come out as solvent.
-struct Regions {
-  std::vector<int> component;         // per tet
-  std::vector<int> component_region;  // per component: markers::kMoleculeRegion or kSolventRegion
-};
-Regions classify_regions(const std::vector<Tetrahedron>& tets,
-                         const std::vector<std::array<int, 4>>& nbr,
-                         const FacetMarkers& facet_marker, const tetgenio& out,
-                         const SurfaceMesh& surface) {
-  const int n_tets = static_cast<int>(tets.size());
-  auto point_at = [&](int i) { return tetgen_point(out, i); };
-  std::vector<int> component(static_cast<std::size_t>(n_tets), -1);
-  std::vector<int> component_region;
-  std::vector<int> stack;
-  for (int seed = 0; seed < n_tets; ++seed) {
-    if (component[seed] >= 0) continue;
-    const int id = static_cast<int>(component_region.size());
-    component[seed] = id;
-    stack.assign(1, seed);
-    while (!stack.empty()) {
-      const int t = stack.back();
-      stack.pop_back();
-      for (int k = 0; k < 4; ++k) {
-        const int n = nbr[t][k];
-        if (n < 0 || component[n] >= 0) continue;
-        const Triangle f = face_opposite(tets[t], k);
-        if (facet_marker.count(face_key(f[0], f[1], f[2]))) continue;
-        component[n] = id;
-        stack.push_back(n);
-      }
-    }
-    const Tetrahedron& st = tets[seed];
-    const Vec3 centroid =
-        (point_at(st[0]) + point_at(st[1]) + point_at(st[2]) + point_at(st[3])) / 4.0;
-    component_region.push_back(winding_number(surface.points, surface.triangles, centroid) > 0.5
-                                   ? markers::kMoleculeRegion
-                                   : markers::kSolventRegion);
-  }
-  return {std::move(component), std::move(component_region)};
-}
-
-// Vertex markers: the highest-ranked marker of the faces around (markers.hpp).
-void assign_vertex_markers(TetMesh& mesh) {
-  mesh.vertex_markers.assign(mesh.points.size(), markers::kNoMarker);
-  for (std::size_t f = 0; f < mesh.boundary_faces.size(); ++f) {
-    const int m = mesh.boundary_face_markers[f];
-    for (int v : mesh.boundary_faces[f])
-      if (markers::vertex_marker_rank(m) > markers::vertex_marker_rank(mesh.vertex_markers[v]))
-        mesh.vertex_markers[v] = m;
-  }
-}
-
 }  // namespace
 
 std::string domain_name(Domain domain) {
@@ -428,55 +345,228 @@ void TetMeshOptions::validate() const {
             "an active-site sphere has a non-finite centre or radius");
 }
 
+namespace {
+
+// What the steps below need to know of the molecule.
+struct MoleculeMeasures {
+  MoleculeExtent extent;
+  double surface_reach = 0.0;  // how far the surface reaches from the centre (Å)
+  double volume = 0.0;         // enclosed by the surface (Å³)
+  double field_radius = 0.0;   // where the far field's size law starts (size_field.hpp)
+};
+
+MoleculeMeasures measure_molecule(const SurfaceMesh& surface, const Atoms& atoms) {
+  MoleculeMeasures m;
+  m.extent = atoms.empty() ? molecule_extent(surface.points) : molecule_extent(atoms);
+  for (const auto& p : surface.points)
+    m.surface_reach = std::max(m.surface_reach, (p - m.extent.centroid).norm());
+  m.volume = std::abs(enclosed_volume(surface.points, surface.triangles));
+  m.field_radius = size_field_radius(m.volume);
+  return m;
+}
+
+// The outer sphere of an exterior or full mesh: the given radius, or sphere_ratio times the
+// molecule's size; it must enclose the surface.
+SurfaceMesh outer_sphere(const MoleculeMeasures& m, const TetMeshOptions& options,
+                         TetMeshReport& report) {
+  double radius = 0.0;
+  if (options.outer_radius) {
+    radius = *options.outer_radius;
+  } else {
+    if (!(options.sphere_ratio > 0.0)) throw Error("the sphere ratio must be positive");
+    radius = options.sphere_ratio * m.extent.size;
+    if (!(radius > 0.0))
+      throw Error(
+          "the molecule has zero size (a single atom?): give the outer sphere "
+          "radius explicitly (`outer_radius`)");
+  }
+  // 5 % slack: the icosphere's flat faces sit slightly inside the true sphere.
+  if (!(radius > m.surface_reach * 1.05))
+    throw Error("the outer sphere (radius " + format_number(radius) +
+                " Å) does not enclose the molecular surface (reaching " +
+                format_number(m.surface_reach) + " Å from the centre); increase it");
+  SurfaceMesh sphere = icosphere(m.extent.centroid, radius, options.outer_sphere_subdivisions);
+  report.outer_radius = radius;
+  report.outer_sphere_vertices = sphere.points.size();
+  return sphere;
+}
+
+// The target size of every input vertex (surface, then sphere) for TetGen's -m, capped at
+// size_cap when that is positive; first the memory the mesh will take is checked against
+// the limit.
+std::vector<double> vertex_sizes(const SurfaceMesh& surface, int n_in, const MoleculeMeasures& m,
+                                 bool want_exterior, const TetMeshOptions& options,
+                                 double outer_radius, double size_cap) {
+  const int n_surface = static_cast<int>(surface.points.size());
+  // The size rule (size_field.hpp): surface vertices from their edges, the outer sphere's
+  // from the far-field law (its triangles bound the tetrahedra resting on it anyway).
+  std::vector<double> sizes = mean_edge_lengths(surface);
+  for (double& h : sizes) h *= options.surface_size_ratio;
+  sizes.resize(static_cast<std::size_t>(n_in), far_field_size(outer_radius, m.field_radius));
+  for (double& h : sizes) h *= options.size_factor;
+  // The molecule's volume at the surface's sizes needs about volume / (h^3 / 8.5)
+  // tetrahedra of edge h (a regular tetrahedron has volume h^3 / 8.49): the interior, or
+  // as much solvent along the surface; plus the far field's. Checked against the memory
+  // limit before TetGen allocates (--size-factor 1e-3 ran for minutes).
+  double h_mean = 0.0;
+  for (int i = 0; i < n_surface; ++i) h_mean += sizes[static_cast<std::size_t>(i)];
+  h_mean /= n_surface;
+  double tetrahedra = m.volume * kTetrahedraPerCube / (h_mean * h_mean * h_mean);
+  if (want_exterior)
+    tetrahedra +=
+        far_field_tetrahedra(m.surface_reach, m.field_radius, outer_radius, options.size_factor);
+  check_memory(tetrahedra * kBytesPerTetrahedron, options.max_memory_bytes,
+               "the tetrahedral mesh (about " + format_number(tetrahedra) +
+                   " tetrahedra at `size_factor` " + format_number(options.size_factor) + ")",
+               "raise `size_factor`");
+  // After the estimate: a max_volume too small is refused by its own estimate later.
+  if (size_cap > 0.0)
+    for (double& h : sizes) h = std::min(h, size_cap);
+  return sizes;
+}
+
+// Atom centres become nodes of the molecule's part. They go into the PLC as isolated
+// vertices, which TetGen puts into its initial Delaunay tetrahedralisation. (Inserting
+// them afterwards with -i crashes TetGen 1.5 in insertconstrainedpoints on mAChE.)
+// Duplicates would be rejected by TetGen, so they are merged here, and so are centres on a
+// surface vertex (both counted in report.coincident_atoms).
+std::vector<Vec3> atom_nodes(const SurfaceMesh& surface, const Atoms& atoms,
+                             TetMeshReport& report) {
+  std::vector<Vec3> nodes;
+  std::unordered_set<std::array<std::uint64_t, 3>, PointKeyHash> seen;
+  std::unordered_set<std::array<std::uint64_t, 3>, PointKeyHash> surface_keys;
+  for (const auto& p : surface.points) surface_keys.insert(point_key(p));
+  for (const auto& a : atoms) {
+    const auto key = point_key(a.center);
+    if (!seen.insert(key).second || surface_keys.count(key)) {
+      ++report.coincident_atoms;
+      continue;
+    }
+    nodes.push_back(a.center);
+  }
+  return nodes;
+}
+
+// Exterior meshes: the molecule's inside is a hole, so TetGen does not refine it only for
+// the classification to drop it (mAChE's level 0: TetGen 15.9 -> 5.8 s). Hole points are
+// atom centres that the molecular surface's winding number puts inside the molecule (not
+// in a cavity); a few spread over the atom list cover multi-part molecules. A part without
+// a hole point is meshed and dropped as before.
+std::vector<Vec3> molecule_holes(const SurfaceMesh& surface, const Atoms& atoms) {
+  std::vector<Vec3> holes;
+  const std::size_t step = std::max<std::size_t>(1, atoms.size() / kMaxHolePoints);
+  for (std::size_t i = 0; i < atoms.size() && holes.size() < kMaxHolePoints; i += step)
+    if (winding_number(surface.points, surface.triangles, atoms[i].center) > 0.5)
+      holes.push_back(atoms[i].center);
+  return holes;
+}
+
+// Appends isolated nodes to TetGen's input, the vertex sizes when there are any (a node
+// takes none of its own: 0 lets TetGen interpolate one), and the hole points, if any are
+// given (`holes` non-null).
+void complete_input(const std::vector<Vec3>& nodes, const std::vector<double>& sizes,
+                    const std::vector<Vec3>* holes, tetgenio& in) {
+  const int n_in = in.numberofpoints;
+  if (!nodes.empty()) {
+    const std::size_t n_all = static_cast<std::size_t>(n_in) + nodes.size();
+    auto* all_points = new REAL[n_all * 3];
+    std::copy(in.pointlist, in.pointlist + static_cast<std::size_t>(n_in) * 3, all_points);
+    for (std::size_t i = 0; i < nodes.size(); ++i)
+      for (int d = 0; d < 3; ++d) all_points[3 * (n_in + i) + d] = nodes[i][d];
+    delete[] in.pointlist;
+    in.pointlist = all_points;
+    in.numberofpoints = static_cast<int>(n_all);
+  }
+  if (!sizes.empty()) {
+    in.numberofpointmtrs = 1;
+    in.pointmtrlist = new REAL[static_cast<std::size_t>(in.numberofpoints)];
+    for (int i = 0; i < in.numberofpoints; ++i)
+      in.pointmtrlist[i] = i < n_in ? sizes[static_cast<std::size_t>(i)] : 0.0;
+  }
+  if (holes) {
+    in.numberofholes = static_cast<int>(holes->size());
+    in.holelist = new REAL[holes->size() * 3];
+    for (std::size_t i = 0; i < holes->size(); ++i)
+      for (int d = 0; d < 3; ++d) in.holelist[3 * i + d] = (*holes)[i][d];
+  }
+}
+
+// The solvent's sizes: a background mesh through the surface, the outer sphere and the
+// far-field shells, all with their sizes (`vertex_sizes` holds the surface's and the
+// sphere's).
+void solvent_background(const SurfaceMesh& surface, const SurfaceMesh& sphere,
+                        const std::vector<double>& vertex_sizes, const MoleculeMeasures& m,
+                        const TetMeshOptions& options, double outer_radius, double size_cap,
+                        tetgenio& background) {
+  const int n_surface = static_cast<int>(surface.points.size());
+  const int n_in = n_surface + static_cast<int>(sphere.points.size());
+  const SizePoints shells = far_field_size_points(
+      m.extent.centroid, m.surface_reach, m.field_radius, outer_radius, options.size_factor);
+  std::vector<Vec3> points = surface.points;
+  points.insert(points.end(), sphere.points.begin(), sphere.points.end());
+  points.insert(points.end(), shells.points.begin(), shells.points.end());
+  std::vector<double> sizes(vertex_sizes.begin(), vertex_sizes.begin() + n_in);
+  sizes.insert(sizes.end(), shells.sizes.begin(), shells.sizes.end());
+  // The centre too, with the surface's mean size: the Delaunay tetrahedralisation of a
+  // surface's vertices alone is degenerate when they are cospherical (an icosphere input).
+  double nearest = std::numeric_limits<double>::infinity();
+  for (const auto& p : surface.points) nearest = std::min(nearest, (p - m.extent.centroid).norm());
+  if (nearest > 1e-6 * m.surface_reach) {
+    double mean = 0.0;
+    for (int i = 0; i < n_surface; ++i) mean += sizes[static_cast<std::size_t>(i)];
+    points.push_back(m.extent.centroid);
+    sizes.push_back(mean / n_surface);
+  }
+  if (size_cap > 0.0)
+    for (double& h : sizes) h = std::min(h, size_cap);
+  if (!shells.points.empty()) background_mesh(points, sizes, background);
+}
+
+// One TetGen run; TetGen's errors become molmesh::Error.
+void run_tetgen(const std::string& switches, tetgenio& in, tetgenio& background, tetgenio& out) {
+  tetgenbehavior behavior;
+  std::string switch_buffer = switches;
+  if (!behavior.parse_commandline(switch_buffer.data()))
+    throw Error("TetGen rejected the switches \"" + switches + "\"");
+  detail::link_tetgen_terminate_override();
+  try {
+    ::tetrahedralize(&behavior, &in, &out, nullptr,
+                     background.numberofpoints > 0 ? &background : nullptr);
+  } catch (int code) {
+    throw Error("tetrahedral meshing failed: " + tetgen_error_message(code));
+  }
+}
+
+// How many of the atom nodes the mesh kept (the others fell outside the molecule's part).
+void count_atom_nodes(const TetMesh& mesh, const std::vector<Vec3>& nodes, TetMeshReport& report) {
+  std::unordered_set<std::array<std::uint64_t, 3>, PointKeyHash> kept;
+  kept.reserve(mesh.points.size() * 2);
+  for (const auto& p : mesh.points) kept.insert(point_key(p));
+  for (const auto& c : nodes) {
+    if (kept.count(point_key(c)))
+      ++report.atoms_as_nodes;
+    else
+      ++report.atoms_outside;
+  }
+}
+
 // tetrahedralize() in a frame centred on the molecule (see there).
-static TetMesh tetrahedralize_centred(const SurfaceMesh& surface, const Atoms& atoms,
-                                      const TetMeshOptions& options, const Reporter& reporter,
-                                      TetMeshReport* report_out) {
+TetMesh tetrahedralize_centred(const SurfaceMesh& surface, const Atoms& atoms,
+                               const TetMeshOptions& options, const Reporter& reporter,
+                               TetMeshReport* report_out) {
   const auto t_start = Clock::now();
   TetMeshReport report;
-
   const bool want_interior = options.domain != Domain::exterior;
   const bool want_exterior = options.domain != Domain::interior;
-  const MoleculeExtent extent =
-      atoms.empty() ? molecule_extent(surface.points) : molecule_extent(atoms);
-  report.molecule_size = extent.size;
+  const MoleculeMeasures molecule = measure_molecule(surface, atoms);
+  report.molecule_size = molecule.extent.size;
   report.surface_vertices = surface.points.size();
   report.atoms_given = atoms.size();
 
-  // How far the surface reaches from the centre; the molecule's volume.
-  double surface_reach = 0.0;
-  for (const auto& p : surface.points)
-    surface_reach = std::max(surface_reach, (p - extent.centroid).norm());
-  const double molecule_volume = std::abs(enclosed_volume(surface.points, surface.triangles));
-  const double field_radius = size_field_radius(molecule_volume);
-  SurfaceMesh sphere;
-  if (want_exterior) {
-    double radius = 0.0;
-    if (options.outer_radius) {
-      radius = *options.outer_radius;
-    } else {
-      if (!(options.sphere_ratio > 0.0)) throw Error("the sphere ratio must be positive");
-      radius = options.sphere_ratio * extent.size;
-      if (!(radius > 0.0))
-        throw Error(
-            "the molecule has zero size (a single atom?): give the outer sphere "
-            "radius explicitly (`outer_radius`)");
-    }
-    // 5 % slack: the icosphere's flat faces sit slightly inside the true sphere.
-    if (!(radius > surface_reach * 1.05))
-      throw Error("the outer sphere (radius " + format_number(radius) +
-                  " Å) does not enclose the molecular surface (reaching " +
-                  format_number(surface_reach) + " Å from the centre); increase it");
-    sphere = icosphere(extent.centroid, radius, options.outer_sphere_subdivisions);
-    report.outer_radius = radius;
-    report.outer_sphere_vertices = sphere.points.size();
-  }
-
+  const SurfaceMesh sphere =
+      want_exterior ? outer_sphere(molecule, options, report) : SurfaceMesh{};
   // Surface facets first (their indices are kept by TetGen), then the sphere.
-  const int n_surface = static_cast<int>(surface.points.size());
-  const int n_sphere = static_cast<int>(sphere.points.size());
-  const int n_in = n_surface + n_sphere;
-
+  const int n_in = static_cast<int>(surface.points.size() + sphere.points.size());
   tetgenio in;
   detail::fill_plc(surface, sphere, options.active_site, in);
 
@@ -486,118 +576,26 @@ static TetMesh tetrahedralize_centred(const SurfaceMesh& surface, const Atoms& a
   // tetrahedra above the bound once surface sizes were 1.5 edges.
   const double size_cap =
       options.max_volume ? std::cbrt(kTetrahedraPerCube * *options.max_volume) : 0.0;
-  std::vector<double> input_sizes;
-  if (graded) {
-    // The size rule (size_field.hpp): surface vertices from their edges, the outer sphere's
-    // from the far-field law (its triangles bound the tetrahedra resting on it anyway).
-    input_sizes = mean_edge_lengths(surface);
-    for (double& h : input_sizes) h *= options.surface_size_ratio;
-    input_sizes.resize(static_cast<std::size_t>(n_in),
-                       far_field_size(report.outer_radius, field_radius));
-    for (double& h : input_sizes) h *= options.size_factor;
-    // The molecule's volume at the surface's sizes needs about volume / (h^3 / 8.5)
-    // tetrahedra of edge h (a regular tetrahedron has volume h^3 / 8.49): the interior, or
-    // as much solvent along the surface; plus the far field's. Checked against the memory
-    // limit before TetGen allocates (--size-factor 1e-3 ran for minutes).
-    double h_mean = 0.0;
-    for (int i = 0; i < n_surface; ++i) h_mean += input_sizes[static_cast<std::size_t>(i)];
-    h_mean /= n_surface;
-    double tetrahedra = molecule_volume * kTetrahedraPerCube / (h_mean * h_mean * h_mean);
-    if (want_exterior)
-      tetrahedra += far_field_tetrahedra(surface_reach, field_radius, report.outer_radius,
-                                         options.size_factor);
-    check_memory(tetrahedra * kBytesPerTetrahedron, options.max_memory_bytes,
-                 "the tetrahedral mesh (about " + format_number(tetrahedra) +
-                     " tetrahedra at `size_factor` " + format_number(options.size_factor) + ")",
-                 "raise `size_factor`");
-    // After the estimate: a max_volume too small is refused by its own estimate below.
-    if (options.max_volume)
-      for (double& h : input_sizes) h = std::min(h, size_cap);
-  }
-
-  // Atom centres become nodes of the molecule's part. They go into the PLC as isolated
-  // vertices, which TetGen puts into its initial Delaunay tetrahedralisation. (Inserting
-  // them afterwards with -i crashes TetGen 1.5 in insertconstrainedpoints on mAChE.)
-  // Duplicates would be rejected by TetGen, so merge them first.
-  std::vector<Vec3> atom_nodes;
-  if (want_interior && !atoms.empty()) {
-    std::unordered_set<std::array<std::uint64_t, 3>, PointKeyHash> seen;
-    std::unordered_set<std::array<std::uint64_t, 3>, PointKeyHash> surface_keys;
-    for (const auto& p : surface.points) surface_keys.insert(point_key(p));
-    for (const auto& a : atoms) {
-      const auto key = point_key(a.center);
-      if (!seen.insert(key).second || surface_keys.count(key)) {
-        ++report.coincident_atoms;
-        continue;
-      }
-      atom_nodes.push_back(a.center);
-    }
-    const std::size_t n_all = static_cast<std::size_t>(n_in) + atom_nodes.size();
-    auto* all_points = new REAL[n_all * 3];
-    std::copy(in.pointlist, in.pointlist + static_cast<std::size_t>(n_in) * 3, all_points);
-    for (std::size_t i = 0; i < atom_nodes.size(); ++i)
-      for (int d = 0; d < 3; ++d) all_points[3 * (n_in + i) + d] = atom_nodes[i][d];
-    delete[] in.pointlist;
-    in.pointlist = all_points;
-    in.numberofpoints = static_cast<int>(n_all);
-  }
-  if (graded) {
-    // Atom centres take no size of their own (0: TetGen interpolates one).
-    in.numberofpointmtrs = 1;
-    in.pointmtrlist = new REAL[static_cast<std::size_t>(in.numberofpoints)];
-    for (int i = 0; i < in.numberofpoints; ++i)
-      in.pointmtrlist[i] = i < n_in ? input_sizes[static_cast<std::size_t>(i)] : 0.0;
-  }
-  // Exterior meshes: the molecule's inside is a hole, so TetGen does not refine it only for
-  // the classification below to drop it (mAChE's level 0: TetGen 15.9 -> 5.8 s).
-  // Hole points are atom centres that the molecular surface's winding number puts inside
-  // the molecule (not in a cavity); a few spread over the atom list cover multi-part
-  // molecules. A part without a hole point is meshed and dropped as before.
-  std::vector<Vec3> holes;
-  if (!want_interior && !atoms.empty()) {
-    const std::size_t step = std::max<std::size_t>(1, atoms.size() / kMaxHolePoints);
-    for (std::size_t i = 0; i < atoms.size() && holes.size() < kMaxHolePoints; i += step)
-      if (winding_number(surface.points, surface.triangles, atoms[i].center) > 0.5)
-        holes.push_back(atoms[i].center);
-    in.numberofholes = static_cast<int>(holes.size());
-    in.holelist = new REAL[holes.size() * 3];
-    for (std::size_t i = 0; i < holes.size(); ++i)
-      for (int d = 0; d < 3; ++d) in.holelist[3 * i + d] = holes[i][d];
-  }
+  const std::vector<double> sizes = graded ? vertex_sizes(surface, n_in, molecule, want_exterior,
+                                                          options, report.outer_radius, size_cap)
+                                           : std::vector<double>{};
+  const std::vector<Vec3> nodes =
+      want_interior && !atoms.empty() ? atom_nodes(surface, atoms, report) : std::vector<Vec3>{};
+  const bool with_holes = !want_interior && !atoms.empty();
+  const std::vector<Vec3> holes = with_holes ? molecule_holes(surface, atoms) : std::vector<Vec3>{};
+  complete_input(nodes, sizes, with_holes ? &holes : nullptr, in);
   tetgenio background;
-  if (graded && want_exterior) {
-    // The solvent's sizes: a background mesh through the surface, the outer sphere and the
-    // far-field shells, all with their sizes.
-    const SizePoints shells = far_field_size_points(extent.centroid, surface_reach, field_radius,
-                                                    report.outer_radius, options.size_factor);
-    std::vector<Vec3> points = surface.points;
-    points.insert(points.end(), sphere.points.begin(), sphere.points.end());
-    points.insert(points.end(), shells.points.begin(), shells.points.end());
-    std::vector<double> sizes(input_sizes.begin(), input_sizes.begin() + n_in);
-    sizes.insert(sizes.end(), shells.sizes.begin(), shells.sizes.end());
-    // The centre too, with the surface's mean size: the Delaunay tetrahedralisation of a
-    // surface's vertices alone is degenerate when they are cospherical (an icosphere input).
-    double nearest = std::numeric_limits<double>::infinity();
-    for (const auto& p : surface.points) nearest = std::min(nearest, (p - extent.centroid).norm());
-    if (nearest > 1e-6 * surface_reach) {
-      double mean = 0.0;
-      for (int i = 0; i < n_surface; ++i) mean += sizes[static_cast<std::size_t>(i)];
-      points.push_back(extent.centroid);
-      sizes.push_back(mean / n_surface);
-    }
-    if (options.max_volume)
-      for (double& h : sizes) h = std::min(h, size_cap);
-    if (!shells.points.empty()) background_mesh(points, sizes, background);
-  }
+  if (graded && want_exterior)
+    solvent_background(surface, sphere, sizes, molecule, options, report.outer_radius, size_cap,
+                       background);
 
   const std::string switches = tetgen_switches(options, graded);
   report.tetgen_switches = switches;
-
   if (options.max_volume && options.tetgen_switches.empty()) {
     // Every tetrahedron is at most max_volume, so the domain needs at least volume / bound.
     const double domain_volume =
         want_exterior ? 4.0 / 3.0 * std::numbers::pi * std::pow(report.outer_radius, 3)
-                      : molecule_volume;
+                      : molecule.volume;
     const double tetrahedra = domain_volume / *options.max_volume;
     check_memory(tetrahedra * kBytesPerTetrahedron, options.max_memory_bytes,
                  "the tetrahedral mesh (at least " + format_number(tetrahedra) +
@@ -605,125 +603,20 @@ static TetMesh tetrahedralize_centred(const SurfaceMesh& surface, const Atoms& a
                  "raise `max_volume`");
   }
 
-  tetgenbehavior behavior;
-  std::string switch_buffer = switches;
-  if (!behavior.parse_commandline(switch_buffer.data()))
-    throw Error("TetGen rejected the switches \"" + switches + "\"");
   tetgenio out;
   const auto t_tetgen = Clock::now();
-  detail::link_tetgen_terminate_override();
-  try {
-    ::tetrahedralize(&behavior, &in, &out, nullptr,
-                     background.numberofpoints > 0 ? &background : nullptr);
-  } catch (int code) {
-    throw Error("tetrahedral meshing failed: " + tetgen_error_message(code));
-  }
+  run_tetgen(switches, in, background, out);
   report.seconds = seconds_since(t_tetgen);
   reporter.progress("tetrahedralize", 0.8);
 
-  const int n_out_points = out.numberofpoints;
-  const int n_tets = out.numberoftetrahedra;
-  if (n_tets <= 0 || out.tetrahedronlist == nullptr || out.neighborlist == nullptr)
-    throw Error("TetGen produced no tetrahedra");
+  detail::TetGenOutputOptions extract;
+  extract.keep_molecule = want_interior;
+  extract.keep_solvent = want_exterior;
+  extract.input_points = n_in;
+  TetMesh mesh = detail::mesh_from_tetgen(out, surface, extract, &report.surface_steiner_points);
 
-  // Faces TetGen kept on the input facets, with their markers: they separate regions.
-  FacetMarkers facet_marker;
-  facet_marker.reserve(static_cast<std::size_t>(out.numberoftrifaces) * 2);
-  for (int f = 0; f < out.numberoftrifaces; ++f) {
-    const int* v = out.trifacelist + 3 * f;
-    facet_marker[face_key(v[0], v[1], v[2])] =
-        out.trifacemarkerlist ? out.trifacemarkerlist[f] : markers::kMolecularSurface;
-  }
-
-  // Tets as given by TetGen, reoriented positively; neighbour k stays opposite corner k.
-  std::vector<Tetrahedron> tets(static_cast<std::size_t>(n_tets));
-  std::vector<std::array<int, 4>> nbr(static_cast<std::size_t>(n_tets));
-  auto point_at = [&](int i) { return tetgen_point(out, i); };
-  for (int t = 0; t < n_tets; ++t) {
-    Tetrahedron tet{out.tetrahedronlist[4 * t], out.tetrahedronlist[4 * t + 1],
-                    out.tetrahedronlist[4 * t + 2], out.tetrahedronlist[4 * t + 3]};
-    std::array<int, 4> nb{out.neighborlist[4 * t], out.neighborlist[4 * t + 1],
-                          out.neighborlist[4 * t + 2], out.neighborlist[4 * t + 3]};
-    if (orient3d(point_at(tet[0]), point_at(tet[1]), point_at(tet[2]), point_at(tet[3])) < 0.0) {
-      std::swap(tet[2], tet[3]);
-      std::swap(nb[2], nb[3]);
-    }
-    tets[t] = tet;
-    nbr[t] = nb;
-  }
-
-  const Regions regions = classify_regions(tets, nbr, facet_marker, out, surface);
-  const std::vector<int>& component = regions.component;
-  const std::vector<int>& component_region = regions.component_region;
-
-  auto keep_region = [&](int region) {
-    return region == markers::kMoleculeRegion ? want_interior : want_exterior;
-  };
-
-  // Compact: kept tets and the points they use, in TetGen's order.
-  TetMesh mesh;
-  std::vector<int> new_point(static_cast<std::size_t>(n_out_points), -1);
-  std::vector<int> new_tet(static_cast<std::size_t>(n_tets), -1);
-  for (int t = 0; t < n_tets; ++t) {
-    if (!keep_region(component_region[component[t]])) continue;
-    for (int v : tets[t]) new_point[v] = 0;
-  }
-  for (int i = 0; i < n_out_points; ++i) {
-    if (new_point[i] < 0) continue;
-    new_point[i] = static_cast<int>(mesh.points.size());
-    mesh.points.push_back(point_at(i));
-  }
-  for (int t = 0; t < n_tets; ++t) {
-    const int region = component_region[component[t]];
-    if (!keep_region(region)) continue;
-    new_tet[t] = static_cast<int>(mesh.tetrahedra.size());
-    const Tetrahedron& tet = tets[t];
-    mesh.tetrahedra.push_back(
-        {new_point[tet[0]], new_point[tet[1]], new_point[tet[2]], new_point[tet[3]]});
-    mesh.cell_markers.push_back(region);
-  }
-  if (mesh.tetrahedra.empty())
-    throw Error("no tetrahedra lie in the requested domain (is the surface oriented outward?)");
-
-  // Boundary faces of the kept set, and (full meshes) the molecule/solvent interface once,
-  // oriented out of the molecule.
-  for (int t = 0; t < n_tets; ++t) {
-    if (new_tet[t] < 0) continue;
-    const int region = component_region[component[t]];
-    for (int k = 0; k < 4; ++k) {
-      const int n = nbr[t][k];
-      const bool boundary = n < 0 || new_tet[n] < 0;
-      const bool interface = !boundary && region == markers::kMoleculeRegion &&
-                             component_region[component[n]] != region;
-      if (!boundary && !interface) continue;
-      const Triangle f = face_opposite(tets[t], k);
-      const auto it = facet_marker.find(face_key(f[0], f[1], f[2]));
-      mesh.boundary_faces.push_back({new_point[f[0]], new_point[f[1]], new_point[f[2]]});
-      mesh.boundary_face_markers.push_back(it == facet_marker.end() ? markers::kNoMarker
-                                                                    : it->second);
-    }
-  }
-
-  assign_vertex_markers(mesh);
-
-  // Vertices on the molecular surface that were not given: Steiner points (0 with Y).
-  for (int i = n_in; i < n_out_points; ++i) {
-    const int v = new_point[i];
-    if (v >= 0 && (mesh.vertex_markers[v] == markers::kMolecularSurface ||
-                   mesh.vertex_markers[v] == markers::kActiveSite))
-      ++report.surface_steiner_points;
-  }
-
-  if (!atom_nodes.empty()) {
-    std::unordered_set<std::array<std::uint64_t, 3>, PointKeyHash> kept;
-    kept.reserve(mesh.points.size() * 2);
-    for (const auto& p : mesh.points) kept.insert(point_key(p));
-    for (const auto& c : atom_nodes) {
-      if (kept.count(point_key(c)))
-        ++report.atoms_as_nodes;
-      else
-        ++report.atoms_outside;
-    }
+  if (!nodes.empty()) {
+    count_atom_nodes(mesh, nodes, report);
     if (report.atoms_outside > 0)
       reporter.warn(std::to_string(report.atoms_outside) +
                     " atom centres lie outside the molecular surface (or too close to it) and "
@@ -738,6 +631,8 @@ static TetMesh tetrahedralize_centred(const SurfaceMesh& surface, const Atoms& a
   if (report_out) *report_out = report;
   return mesh;
 }
+
+}  // namespace
 
 TetMesh tetrahedralize(const SurfaceMesh& surface, const Atoms& atoms,
                        const TetMeshOptions& options, const Reporter& reporter,
