@@ -1,7 +1,5 @@
 #include "molmesh/hierarchy/build_hierarchy.hpp"
 
-#include <tbb/parallel_for.h>
-
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -55,8 +53,8 @@ Hierarchy build_hierarchy(const SurfaceMesh& surface, const Atoms& atoms,
   const auto start = std::chrono::steady_clock::now();
   options.validate();
   const int count = static_cast<int>(options.t0.size());
-  // Progress: each level's surface + volume, then the transfers, as equal shares.
-  const double share = 1.0 / (2.0 * count + 1.0);
+  // Progress: each level's surface and its volume (with its transfer), as equal shares.
+  const double share = 1.0 / (2.0 * count);
   Hierarchy hierarchy;
   HierarchyReport local;
   TetMeshOptions tet_options = options.tetmesh;
@@ -109,15 +107,41 @@ Hierarchy build_hierarchy(const SurfaceMesh& surface, const Atoms& atoms,
                   ": volume meshing failed: " + e.what());
     }
     local.levels[L].volume_seconds = seconds_since(tick);
+
+    // Renumbering, and the transfer to the finer level L-1 (finished before this thread
+    // started), need nothing of the next level, so they run here too, beside the next
+    // level's surface processing.
+    HierarchyLevel& out = hierarchy.levels[L];
+    HierarchyLevelReport& level_report = local.levels[L];
+    const auto renumber_tick = std::chrono::steady_clock::now();
+    level_report.bandwidth_before = vertex_bandwidth(out.volume);
+    if (options.renumber) {
+      out.volume_permutation = reverse_cuthill_mckee(out.volume);
+      out.volume = sort_cells_by_vertex(permute_vertices(out.volume, out.volume_permutation));
+    }
+    level_report.bandwidth_after = vertex_bandwidth(out.volume);
+    level_report.renumber_seconds = seconds_since(renumber_tick);
+    if (level > 0) {
+      const auto transfer_tick = std::chrono::steady_clock::now();
+      const HierarchyLevel& fine = hierarchy.levels[L - 1];
+      LevelTransfer& transfer = hierarchy.transfers[L - 1];
+      transfer.coarse_level = level;
+      transfer.fine_level = level - 1;
+      transfer.volume = volume_prolongation(out.volume, fine.volume, &level_report.volume_transfer);
+      transfer.surface = surface_prolongation(out.surface, fine.surface, out.surface_provenance,
+                                              &level_report.surface_transfer);
+      level_report.transfer_seconds = seconds_since(transfer_tick);
+    }
   };
 
   // TetGen is single-threaded, and level L+1's surface needs only level L's surface, so
-  // TetGen meshes level L while level L+1's surface is processed on the other core. Each
-  // computation is deterministic and reads only finished inputs, so the hierarchy is the
-  // same as a sequential run's, whatever the thread count.
+  // TetGen meshes level L (then renumbers it and builds its transfer to level L-1) while
+  // level L+1's surface is processed on the other core. Each computation is deterministic
+  // and reads only finished inputs, so the hierarchy is the same as a sequential run's,
+  // whatever the thread count.
+  hierarchy.transfers.resize(static_cast<std::size_t>(std::max(0, count - 1)));
   process_level(0);
   for (int level = 0; level < count; ++level) {
-    const auto L = static_cast<std::size_t>(level);
     std::vector<std::string> warnings;
     std::exception_ptr volume_error;
     std::thread volume_thread([&] {
@@ -140,43 +164,15 @@ Hierarchy build_hierarchy(const SurfaceMesh& surface, const Atoms& atoms,
     if (volume_error) std::rethrow_exception(volume_error);  // the earlier level's failure first
     if (surface_error) std::rethrow_exception(surface_error);
 
-    HierarchyLevel& out = hierarchy.levels[L];
-    HierarchyLevelReport& level_report = local.levels[L];
     if (level == 0) {
       // Every level must mesh the same domain: freeze the outer radius level 0 chose.
-      local.outer_radius = level_report.tetmesh.outer_radius;
+      local.outer_radius = local.levels[0].tetmesh.outer_radius;
       if (tet_options.domain != Domain::interior && local.outer_radius > 0.0) {
         tet_options.outer_radius = local.outer_radius;
       }
     }
-
-    const auto tick = std::chrono::steady_clock::now();
-    level_report.bandwidth_before = vertex_bandwidth(out.volume);
-    if (options.renumber) {
-      out.volume_permutation = reverse_cuthill_mckee(out.volume);
-      out.volume = sort_cells_by_vertex(permute_vertices(out.volume, out.volume_permutation));
-    }
-    level_report.bandwidth_after = vertex_bandwidth(out.volume);
-    level_report.renumber_seconds = seconds_since(tick);
     reporter.progress("hierarchy", (2.0 * level + 2.0) * share);
   }
-
-  // Transfers between different level pairs are independent: computed in parallel, stored
-  // in level order.
-  hierarchy.transfers.resize(static_cast<std::size_t>(std::max(0, count - 1)));
-  tbb::parallel_for(0, count - 1, [&](int fine) {
-    const auto tick = std::chrono::steady_clock::now();
-    const auto& f = hierarchy.levels[static_cast<std::size_t>(fine)];
-    const auto& c = hierarchy.levels[static_cast<std::size_t>(fine) + 1];
-    auto& level_report = local.levels[static_cast<std::size_t>(fine) + 1];
-    LevelTransfer& transfer = hierarchy.transfers[static_cast<std::size_t>(fine)];
-    transfer.coarse_level = fine + 1;
-    transfer.fine_level = fine;
-    transfer.volume = volume_prolongation(c.volume, f.volume, &level_report.volume_transfer);
-    transfer.surface = surface_prolongation(c.surface, f.surface, c.surface_provenance,
-                                            &level_report.surface_transfer);
-    level_report.transfer_seconds = seconds_since(tick);
-  });
   reporter.progress("hierarchy", 1.0);
   local.seconds = seconds_since(start);
   if (report) *report = local;
