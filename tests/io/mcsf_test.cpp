@@ -134,7 +134,8 @@ TEST(Mcsf, FaceTypesArePerFaceAndIndependentOfTheThreadCount) {
   // unmarked; one interior face carries a marker too (as the molecular surface of a full
   // mesh does) and must stay interior.
   std::map<std::array<int, 3>, int> marker;
-  for (const auto& [f, n] : uses) {
+  for (const auto& [face, n] : uses) {
+    const std::array<int, 3>& f = face;  // clang 14 cannot capture a structured binding
     const auto x = [&](std::size_t c) { return mesh.points[f[c]].x(); };
     int m = -1;
     if (n == 1 && x(0) == 0 && x(1) == 0 && x(2) == 0) m = markers::kActiveSite;
