@@ -155,6 +155,26 @@ TEST(Structure, TextBeyondColumn120IsNotARecordAndShortLinkRecordsAreSafe) {
   EXPECT_DOUBLE_EQ(atoms[1].center.x(), 2.0);
 }
 
+// gemmi reads a DBREF2 record's database positions (columns 46-55, 58-67) as ints without
+// an overflow check: "3333333333" there was a signed overflow (UBSan, the sanitizer leg;
+// tests/fuzz/crashes/pdb/gemmi_dbref2_int_overflow.pdb). molmesh reads nothing of DBREF, so
+// such a value is blanked and the atoms read as ever.
+TEST(Structure, DbrefPositionsBeyondAnIntAreSafe) {
+  const std::string atom =
+      "ATOM      1  N   ALA A   1       1.000   0.000   0.000  1.00  0.00           N  ";
+  const std::string dbref1 = "DBREF1 1ABC A    1    10  UNP                  ABC_HUMAN";
+  std::string dbref2 = "DBREF2 1ABC A     P12345";
+  dbref2.resize(45, ' ');
+  dbref2 += "3333333333";  // columns 46-55
+  dbref2.resize(57, ' ');
+  dbref2 += "9999999999";  // columns 58-67
+  ASSERT_EQ(dbref2.substr(45, 10), "3333333333");
+  const auto path = write_text("dbref2.pdb", dbref1 + "\n" + dbref2 + "\n" + atom + "\nEND\n");
+  const Atoms atoms = read_atoms(path);
+  ASSERT_EQ(atoms.size(), 1u);
+  EXPECT_DOUBLE_EQ(atoms[0].center.x(), 1.0);
+}
+
 TEST(Structure, FiltersHydrogens) {
   AtomReadOptions heavy;
   heavy.include_hydrogens = false;

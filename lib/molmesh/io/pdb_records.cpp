@@ -1,7 +1,10 @@
 #include "molmesh/io/pdb_records.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <cstdio>
+#include <limits>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -25,6 +28,21 @@ bool starts_with_record(std::string_view line, std::string_view word) {
   for (std::size_t i = 0; i < word.size(); ++i)
     if (std::toupper(static_cast<unsigned char>(line[i])) != word[i]) return false;
   return true;
+}
+
+// Whether gemmi's string_to_int would overflow an int reading `field`: blanks, a sign, then
+// the digits it accumulates (it stops at the first other character).
+bool int_field_overflows(std::string_view field) {
+  std::size_t i = 0;
+  // gemmi's blanks: space and the control characters 9-13.
+  while (i < field.size() && (field[i] == ' ' || (field[i] >= '\t' && field[i] <= '\r'))) ++i;
+  if (i < field.size() && (field[i] == '-' || field[i] == '+')) ++i;
+  long long value = 0;
+  for (; i < field.size() && field[i] >= '0' && field[i] <= '9'; ++i) {
+    value = value * 10 + (field[i] - '0');
+    if (value > std::numeric_limits<int>::max()) return true;
+  }
+  return false;
 }
 
 bool is_coordinate_record(std::string_view line) {
@@ -134,10 +152,13 @@ PdbScan scan_pdb_records(const std::string& contents, const std::string& name) {
     copied = offset + line.size();
     changed = true;
   };
-  // Two guards for gemmi 0.5 (Debian 12), both found by fuzzing (tests/fuzz/crashes/pdb):
+  // Three guards for gemmi 0.5 (Debian 12), all found by fuzzing (tests/fuzz/crashes/pdb):
   // it reads columns 74-78 of an SSBOND/LINK record past the end of a shorter line, so those
-  // are padded to 80 columns; and it ignores a line beyond column 120 but, at a byte >= 0x80
-  // there, starts a new record after it, so lines are cut at 120 columns (what it reads).
+  // are padded to 80 columns; it ignores a line beyond column 120 but, at a byte >= 0x80
+  // there, starts a new record after it, so lines are cut at 120 columns (what it reads);
+  // and it reads a DBREF2 record's database positions (columns 46-55, 58-67) as 10-digit
+  // ints without an overflow check (undefined behaviour), so such records are padded to 80
+  // columns and a value beyond an int is blanked (molmesh reads nothing of DBREF).
   constexpr std::size_t gemmi_columns = 120;
   auto guard_for_gemmi = [&] {
     if (line.size() > gemmi_columns) {
@@ -148,6 +169,15 @@ PdbScan scan_pdb_records(const std::string& contents, const std::string& name) {
       std::string padded(line);
       padded.resize(80, ' ');
       replace(padded);
+    } else if (starts_with_record(line, "DBRE") && line.size() > 5 && line[5] == '2') {
+      // Padded too: past the end of a shorter line gemmi reads what an earlier, longer line
+      // left in its buffer.
+      std::string safe(line);
+      if (safe.size() < 80) safe.resize(80, ' ');
+      for (const std::size_t column : {std::size_t{45}, std::size_t{57}})
+        if (int_field_overflows(std::string_view(safe).substr(column, 10)))
+          safe.replace(column, 10, 10, ' ');
+      if (safe != line) replace(safe);
     }
   };
   while (cursor.next(line)) {
