@@ -169,7 +169,10 @@ TEST(Structure, DbrefPositionsBeyondAnIntAreSafe) {
   dbref2.resize(57, ' ');
   dbref2 += "9999999999";  // columns 58-67
   ASSERT_EQ(dbref2.substr(45, 10), "3333333333");
-  const auto path = write_text("dbref2.pdb", dbref1 + "\n" + dbref2 + "\n" + atom + "\nEND\n");
+  // Also beyond column 120 (where the line is cut first), and short after a long line.
+  const std::string longer = dbref2 + std::string(70, '5');
+  const auto path = write_text("dbref2.pdb", dbref1 + "\n" + dbref2 + "\n" + longer + "\n" + atom +
+                                                 "\n" + "DBREF2 1ABC A\nEND\n");
   const Atoms atoms = read_atoms(path);
   ASSERT_EQ(atoms.size(), 1u);
   EXPECT_DOUBLE_EQ(atoms[0].center.x(), 1.0);

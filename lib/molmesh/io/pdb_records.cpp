@@ -161,24 +161,20 @@ PdbScan scan_pdb_records(const std::string& contents, const std::string& name) {
   // columns and a value beyond an int is blanked (molmesh reads nothing of DBREF).
   constexpr std::size_t gemmi_columns = 120;
   auto guard_for_gemmi = [&] {
-    if (line.size() > gemmi_columns) {
-      replace(line.substr(0, gemmi_columns));
-    } else if (line.size() < 80 &&
-               (starts_with_record(line, "SSBO") || starts_with_record(line, "LINK"))) {
+    std::string safe(line.substr(0, gemmi_columns));
+    if (safe.size() < 80 &&
+        (starts_with_record(safe, "SSBO") || starts_with_record(safe, "LINK"))) {
       // gemmi tells records apart by their first four letters only.
-      std::string padded(line);
-      padded.resize(80, ' ');
-      replace(padded);
-    } else if (starts_with_record(line, "DBRE") && line.size() > 5 && line[5] == '2') {
+      safe.resize(80, ' ');
+    } else if (starts_with_record(safe, "DBRE") && safe.size() > 5 && safe[5] == '2') {
       // Padded too: past the end of a shorter line gemmi reads what an earlier, longer line
       // left in its buffer.
-      std::string safe(line);
       if (safe.size() < 80) safe.resize(80, ' ');
       for (const std::size_t column : {std::size_t{45}, std::size_t{57}})
         if (int_field_overflows(std::string_view(safe).substr(column, 10)))
           safe.replace(column, 10, 10, ' ');
-      if (safe != line) replace(safe);
     }
+    if (safe != line) replace(safe);
   };
   while (cursor.next(line)) {
     if (!is_coordinate_record(line)) {
