@@ -178,6 +178,19 @@ TEST(Structure, DbrefPositionsBeyondAnIntAreSafe) {
   EXPECT_DOUBLE_EQ(atoms[0].center.x(), 1.0);
 }
 
+// gemmi reads any record whose first four letters are HETA as HETATM; such a record with a
+// coordinate that is no finite number must be refused like a HETATM one, not read as an
+// atom at infinity (pdb fuzz campaign: tests/fuzz/crashes/pdb/gemmi_heta_record.pdb).
+TEST(Structure, RecordsGemmiReadsAsAtomsAreCheckedLikeAtoms) {
+  const std::string atom =
+      "ATOM      1  N   ALA A   1       1.000   0.000   0.000  1.00  0.00           N  ";
+  std::string heta =
+      "HETAXX    2 FE   HEM A   2       2.000   0.000   0.000  1.00  0.00          FE  ";
+  heta.replace(30, 8, " 1.0E999");
+  expect_input_error([&] { read_atoms(write_text("heta.pdb", atom + "\n" + heta + "\n")); },
+                     {"heta.pdb:2"});
+}
+
 TEST(Structure, FiltersHydrogens) {
   AtomReadOptions heavy;
   heavy.include_hydrogens = false;

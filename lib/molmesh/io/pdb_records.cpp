@@ -45,8 +45,11 @@ bool int_field_overflows(std::string_view field) {
   return false;
 }
 
+// What gemmi reads as an atom: it tells records apart by their first four letters, so
+// "HETAxx" is a HETATM record to it (the pdb fuzz campaign: "HETATILEM" carried an infinite
+// coordinate past this check when it asked for all six letters).
 bool is_coordinate_record(std::string_view line) {
-  return starts_with_record(line, "HETATM") || starts_with_record(line, "ATOM");
+  return starts_with_record(line, "HETA") || starts_with_record(line, "ATOM");
 }
 
 // Whether columns 31-38, 39-46, 47-54 hold three finite numbers.
