@@ -1,6 +1,5 @@
 #include "molmesh/io/pdb_records.hpp"
 
-#include <algorithm>
 #include <cctype>
 #include <cstdio>
 #include <limits>
@@ -164,19 +163,24 @@ PdbScan scan_pdb_records(const std::string& contents, const std::string& name) {
   // columns and a value beyond an int is blanked (molmesh reads nothing of DBREF).
   constexpr std::size_t gemmi_columns = 120;
   auto guard_for_gemmi = [&] {
-    std::string safe(line.substr(0, gemmi_columns));
-    if (safe.size() < 80 &&
-        (starts_with_record(safe, "SSBO") || starts_with_record(safe, "LINK"))) {
-      // gemmi tells records apart by their first four letters only.
-      safe.resize(80, ' ');
-    } else if (starts_with_record(safe, "DBRE") && safe.size() > 5 && safe[5] == '2') {
-      // Padded too: past the end of a shorter line gemmi reads what an earlier, longer line
-      // left in its buffer.
-      if (safe.size() < 80) safe.resize(80, ' ');
+    const std::string_view visible = line.substr(0, gemmi_columns);
+    // gemmi tells records apart by their first four letters only.
+    const bool short_bond = visible.size() < 80 && (starts_with_record(visible, "SSBO") ||
+                                                    starts_with_record(visible, "LINK"));
+    const bool dbref2 =
+        starts_with_record(visible, "DBRE") && visible.size() > 5 && visible[5] == '2';
+    if (!short_bond && !dbref2) {
+      if (visible.size() < line.size()) replace(visible);
+      return;
+    }
+    // Both padded: past the end of a shorter line gemmi reads what an earlier, longer line
+    // left in its buffer.
+    std::string safe(visible);
+    if (safe.size() < 80) safe.resize(80, ' ');
+    if (dbref2)
       for (const std::size_t column : {std::size_t{45}, std::size_t{57}})
         if (int_field_overflows(std::string_view(safe).substr(column, 10)))
           safe.replace(column, 10, 10, ' ');
-    }
     if (safe != line) replace(safe);
   };
   while (cursor.next(line)) {
