@@ -8,6 +8,7 @@
 #include "molmesh/io/read_atoms.hpp"
 #include "molmesh/pipeline/surface_pipeline.hpp"
 #include "molmesh/surface/point_in_mesh.hpp"
+#include "molmesh/surface/surface_stats.hpp"
 
 namespace molmesh {
 namespace {
@@ -43,6 +44,25 @@ TEST(SurfaceMache, ClosedManifoldOutwardAllAtomsInsideDeterministic) {
   for (const Atom& a : atoms)
     if (a.radius > 0.0 && tester.winding_number(a.center) != 1) ++outside;
   EXPECT_EQ(outside, 0);
+}
+
+// Issue 13's floors on the paper's molecule with the defaults: angles (min ≥ 30°, max ≤ 112°,
+// ≥ 93 % in [40°, 80°]), no more than 18k vertices, the raw volume within 0.5 %, vertices on
+// Eq. 1's level set.
+TEST(SurfaceMache, DefaultSurfaceReachesTheQualityFloors) {
+  const Atoms atoms = read_atoms(std::string(MOLMESH_TEST_DATA_DIR) + "/mache.pqr");
+  const SurfacePipelineResult r = surface_from_atoms(atoms, {});
+  const SurfaceStats s = compute_surface_stats(r.surface);
+  EXPECT_GE(s.min_angle_deg, 30.0);
+  EXPECT_LE(s.max_angle_deg, 112.0);
+  EXPECT_GE(s.fraction_angles_40_80, 0.93);
+  EXPECT_LE(s.vertices, 18000u);
+  EXPECT_TRUE(s.closed && s.manifold);
+  const SurfaceStats& raw = *r.stages[1].stats;
+  EXPECT_EQ(s.euler_characteristic, raw.euler_characteristic);
+  EXPECT_NEAR(s.volume, raw.volume, 0.005 * raw.volume);
+  ASSERT_TRUE(r.level_set_distance.has_value());
+  EXPECT_LT(r.level_set_distance->vertex_max, 0.05);
 }
 
 }  // namespace

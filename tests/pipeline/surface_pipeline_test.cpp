@@ -9,6 +9,7 @@
 #include "molmesh/core/error.hpp"
 #include "molmesh/io/read_atoms.hpp"
 #include "molmesh/surface/point_in_mesh.hpp"
+#include "molmesh/surface/surface_stats.hpp"
 #include "molmesh/volume/gaussian_field.hpp"
 #include "molmesh/volume/level_set_projection.hpp"
 
@@ -48,6 +49,22 @@ void check_molecule(const std::string& name, std::size_t min_vertices) {
 TEST(SurfacePipeline, Molecule1a1p) { check_molecule("1a1p.pqr", 8000); }
 TEST(SurfacePipeline, MoleculeFas2) { check_molecule("fas2.pqr", 20000); }
 TEST(SurfacePipeline, MoleculeFromPdbWithRadiusTable) { check_molecule("1a1p.pdb", 8000); }
+
+// Issue 13's angle floors through the default pipeline (B = -0.5, 0.5 Å, T0 = 0.2, projected
+// onto Eq. 1); mAChE's are in surface_mache_slow_test.cpp.
+void check_angle_floors(const std::string& name) {
+  const Atoms atoms = read_atoms(std::string(MOLMESH_TEST_DATA_DIR) + "/" + name);
+  const SurfacePipelineResult r = surface_from_atoms(atoms, {});
+  const SurfaceStats s = compute_surface_stats(r.surface);
+  EXPECT_GE(s.min_angle_deg, 30.0) << name;
+  EXPECT_LE(s.max_angle_deg, 112.0) << name;
+  EXPECT_GE(s.fraction_angles_40_80, 0.93) << name;
+  EXPECT_TRUE(s.closed && s.manifold) << name;
+  EXPECT_EQ(s.euler_characteristic, r.stages[1].stats->euler_characteristic) << name;
+}
+
+TEST(SurfacePipeline, AngleFloorsOn1a1p) { check_angle_floors("1a1p.pqr"); }
+TEST(SurfacePipeline, AngleFloorsOnFas2) { check_angle_floors("fas2.pqr"); }
 
 TEST(SurfacePipeline, VolumeInputSkipsBlur) {
   Atom a;

@@ -9,6 +9,7 @@
 #include "molmesh/processing/coarsen.hpp"
 #include "molmesh/processing/edge_flips.hpp"
 #include "molmesh/processing/halfedge_mesh.hpp"
+#include "molmesh/processing/low_valence_removal.hpp"
 #include "molmesh/processing/processing_option_specs.hpp"
 #include "molmesh/processing/project_vertices.hpp"
 #include "molmesh/processing/untangle.hpp"
@@ -103,7 +104,32 @@ ProcessingResult process_centred(const SurfaceMesh& input, const ProcessingOptio
   improve.rings = options.rings;
   FlipOptions flips;
 
-  auto improve_and_flip = [&](const std::string& suffix, int sweeps, bool worklist = false) {
+  // Removes the valence-3 and -4 vertices that flips cannot fix, then lets the valence flips
+  // spread what is left; the improvement that follows evens the angles out.
+  auto remove_low_valence = [&](const std::string& suffix) {
+    timer.run("valence" + suffix, [&] {
+      HalfedgeMesh editable(result.mesh);
+      LowValenceRemovalOptions removal;
+      removal.keep_spheres = options.keep_spheres;
+      removal.project = options.project;
+      remove_low_valence_vertices(editable, removal);
+      flip_edges_for_valence(editable, flips, options.valence_stage_flip_min_angle_deg);
+      HalfedgeMesh::Compacted compact = editable.to_surface_mesh();
+      for (int& p : compact.new_to_old) p = result.provenance[p];
+      result.mesh = std::move(compact.mesh);
+      result.provenance = std::move(compact.new_to_old);
+    });
+  };
+
+  // `first`: the improvement of the raw marching-cubes mesh, whose vertices coarsening
+  // removes by the thousand anyway.
+  auto improve_and_flip = [&](const std::string& suffix, int sweeps, bool worklist = false,
+                              bool first = false) {
+    // Only when coarsening: without it every input vertex is kept (`molmesh improve
+    // --no-coarsen` keeps a user mesh's vertices).
+    if (!first && !options.t0.empty() && options.remove_low_valence && options.flips &&
+        options.valence_flips)
+      remove_low_valence(suffix);
     ImproveOptions pass = improve;
     pass.sweeps = sweeps;
     pass.worklist = pass.worklist || worklist;
@@ -130,7 +156,7 @@ ProcessingResult process_centred(const SurfaceMesh& input, const ProcessingOptio
     }
   };
 
-  improve_and_flip("", options.initial_sweeps);
+  improve_and_flip("", options.initial_sweeps, false, true);
   for (double t0 : options.t0) {
     const std::string tag = " T0=" + format_t0(t0);
     timer.run("coarsen" + tag, [&] {
