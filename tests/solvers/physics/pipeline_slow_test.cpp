@@ -25,9 +25,10 @@ fs::path work_dir() {
   return dir;
 }
 
-void write_ion(const fs::path& path, double radius) {
+void write_ion(const fs::path& path, double radius,
+               const char* position = "0.000   0.000   0.000") {
   std::ofstream out(path);
-  out << "ATOM      1  NA  ION     1       0.000   0.000   0.000  1.0000 " << radius << "\n";
+  out << "ATOM      1  NA  ION     1       " << position << "  1.0000 " << radius << "\n";
 }
 
 nlohmann::json run(const std::string& args, const fs::path& json) {
@@ -63,23 +64,31 @@ TEST(SolverPipeline, AbsorbingSphereWithinOnePercentAtTheDefaults) {
   EXPECT_LE(j["iterations"].get<int>(), 15);
 }
 
+// At the origin and moved by tenths of an Å against the grid: one position alone can be
+// lucky (the surface ratio 1.5 gave +0.55 % at the origin and up to +2.1 % elsewhere).
 TEST(SolverPipeline, BornIonWithinOnePercentAtTheDefaults) {
   const fs::path dir = work_dir();
-  write_ion(dir / "born3.pqr", 3.0);
-  const fs::path h5 = dir / "born3_defaults.h5";
-  ASSERT_EQ(molmesh::testing::run_cli("-q hierarchy " + (dir / "born3.pqr").string() + " -o " +
-                                      h5.string() + " --domain full --outer-radius 60")
-                .exit_code,
-            0);
-  const auto j = run("solve poisson " + h5.string() + " --pqr " + (dir / "born3.pqr").string() +
-                         " --json " + (dir / "born_defaults.json").string(),
-                     dir / "born_defaults.json");
-  const double dg = j["solvation_energy_kJ_per_mol"].get<double>();
-  std::printf("Born dG = %.3f kJ/mol (%+.2f %%), %d iterations\n", dg, 100.0 * (dg / -228.61 - 1.0),
-              j["iterations"].get<int>());
-  // Measured +0.55 % (-3.4 % before the size field).
-  EXPECT_NEAR(dg / -228.61, 1.0, 0.01);
-  EXPECT_LE(j["iterations"].get<int>(), 30);  // 22 (20 before)
+  int case_number = 0;
+  for (const char* position : {"0.000   0.000   0.000", "0.100   0.200   0.300",
+                               "0.250   0.050   0.130", "0.370   0.410   0.020"}) {
+    const std::string stem = "born3_" + std::to_string(case_number++);
+    write_ion(dir / (stem + ".pqr"), 3.0, position);
+    const fs::path h5 = dir / (stem + ".h5");
+    ASSERT_EQ(molmesh::testing::run_cli("-q hierarchy " + (dir / (stem + ".pqr")).string() +
+                                        " -o " + h5.string() + " --domain full --outer-radius 60")
+                  .exit_code,
+              0);
+    const auto j =
+        run("solve poisson " + h5.string() + " --pqr " + (dir / (stem + ".pqr")).string() +
+                " --no-fields --json " + (dir / (stem + ".json")).string(),
+            dir / (stem + ".json"));
+    const double dg = j["solvation_energy_kJ_per_mol"].get<double>();
+    std::printf("Born dG at (%s) = %.3f kJ/mol (%+.2f %%), %d iterations\n", position, dg,
+                100.0 * (dg / -228.61 - 1.0), j["iterations"].get<int>());
+    // Measured +0.25, +0.37, +0.60, +0.41 % (surface ratio 1.2).
+    EXPECT_NEAR(dg / -228.61, 1.0, 0.01) << position;
+    EXPECT_LE(j["iterations"].get<int>(), 30);  // 22
+  }
 }
 
 TEST(SolverPipeline, BornIonFromTheTetGenHierarchy) {
