@@ -44,6 +44,15 @@ class StageTimer {
   bool record_;
 };
 
+// Compacts an edited mesh into the result, composing the provenance (output vertex →
+// input vertex of process_surface) through the compaction.
+void take_edited(ProcessingResult& result, const HalfedgeMesh& editable) {
+  HalfedgeMesh::Compacted compact = editable.to_surface_mesh();
+  for (int& p : compact.new_to_old) p = result.provenance[p];
+  result.mesh = std::move(compact.mesh);
+  result.provenance = std::move(compact.new_to_old);
+}
+
 ProcessingResult process_centred(const SurfaceMesh& input, const ProcessingOptions& options,
                                  const Reporter& reporter);
 
@@ -114,10 +123,7 @@ ProcessingResult process_centred(const SurfaceMesh& input, const ProcessingOptio
       removal.project = options.project;
       remove_low_valence_vertices(editable, removal);
       flip_edges_for_valence(editable, flips, options.valence_stage_flip_min_angle_deg);
-      HalfedgeMesh::Compacted compact = editable.to_surface_mesh();
-      for (int& p : compact.new_to_old) p = result.provenance[p];
-      result.mesh = std::move(compact.mesh);
-      result.provenance = std::move(compact.new_to_old);
+      take_edited(result, editable);
     });
   };
 
@@ -148,10 +154,7 @@ ProcessingResult process_centred(const SurfaceMesh& input, const ProcessingOptio
         HalfedgeMesh editable(result.mesh);
         flip_edges_for_valence(editable, flips, options.valence_flip_min_angle_deg);
         flip_edges_for_angles(editable, flips);
-        HalfedgeMesh::Compacted compact = editable.to_surface_mesh();
-        for (int& p : compact.new_to_old) p = result.provenance[p];
-        result.mesh = std::move(compact.mesh);
-        result.provenance = std::move(compact.new_to_old);
+        take_edited(result, editable);
       });
     }
   };
