@@ -87,8 +87,10 @@ std::size_t remove_low_valence_vertices(HalfedgeMesh& mesh,
     for (int r : ring) mean_edge += (mesh.position(r) - mesh.position(v)).norm();
     mean_edge /= m;
 
-    // The candidate re-triangulations of the hole and what each does to the valences.
-    std::vector<Candidate> candidates;
+    // The candidate re-triangulations of the hole and what each does to the valences (at
+    // most two: no allocation per vertex).
+    std::array<Candidate, 2> candidates;
+    int candidate_count = 0;
     if (m == 3) {
       if (valence[ring[0]] < 4 || valence[ring[1]] < 4 || valence[ring[2]] < 4) continue;
       Candidate c;
@@ -100,7 +102,7 @@ std::size_t remove_low_valence_vertices(HalfedgeMesh& mesh,
         after += deviation(valence[r] - 1);
       }
       c.gain = before - after;
-      candidates.push_back(c);
+      candidates[candidate_count++] = c;
     } else {
       for (int k = 0; k < 2; ++k) {
         // Diagonal ring[k]-ring[k+2]; ring[k+1] and ring[k+3] lose their edge to v.
@@ -113,11 +115,12 @@ std::size_t remove_low_valence_vertices(HalfedgeMesh& mesh,
         const int before = deviation(4) + deviation(valence[b]) + deviation(valence[d]);
         const int after = deviation(valence[b] - 1) + deviation(valence[d] - 1);
         c.gain = before - after;
-        candidates.push_back(c);
+        candidates[candidate_count++] = c;
       }
     }
     const Candidate* best = nullptr;
-    for (Candidate& c : candidates) {
+    for (int i = 0; i < candidate_count; ++i) {
+      Candidate& c = candidates[i];
       if (c.gain <= 0) continue;
       if (!keeps_shape(mesh, v, c, star_normal, mean_edge, options, c.min_angle)) continue;
       if (!best || c.gain > best->gain || (c.gain == best->gain && c.min_angle > best->min_angle))
