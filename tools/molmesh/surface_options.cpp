@@ -1,7 +1,9 @@
 #include "surface_options.hpp"
 
+#include <iterator>
 #include <map>
 #include <string>
+#include <type_traits>
 
 #include "molmesh/atoms/atom_option_specs.hpp"
 #include "molmesh/pipeline/surface_option_specs.hpp"
@@ -10,6 +12,20 @@
 #include "spec_option.hpp"
 
 namespace molmesh::cli {
+
+namespace {
+
+// An option whose value is one of an enum's names (any case), e.g. --surface ses.
+template <class Values, class NameOf>
+CLI::CheckedTransformer choice_of(const Values& values, NameOf name_of) {
+  std::map<std::string, std::decay_t<decltype(*std::begin(values))>> names;
+  for (const auto& value : values) names[name_of(value)] = value;
+  CLI::CheckedTransformer transformer(names, CLI::ignore_case);
+  transformer.description("");  // the choices are the option's type name
+  return transformer;
+}
+
+}  // namespace
 
 void add_atom_options(CLI::App& cmd, AtomReadOptions& options) {
   const AtomOptionSpecs& specs = kAtomOptionSpecs;
@@ -26,15 +42,7 @@ void add_surface_pipeline_options(CLI::App& cmd, SurfacePipelineOptions& options
   const SurfaceOptionSpecs& specs = kSurfaceOptionSpecs;
   const ProcessingOptionSpecs& processing = kProcessingOptionSpecs;
   add_spec_option(cmd, specs.surface, options.surface)
-      ->transform(CLI::CheckedTransformer(
-                      [] {
-                        std::map<std::string, SurfaceKind> names;
-                        for (SurfaceKind kind : kSurfaceKinds)
-                          names[surface_kind_name(kind)] = kind;
-                        return names;
-                      }(),
-                      CLI::ignore_case)
-                      .description(""))  // the choices are the type name
+      ->transform(choice_of(kSurfaceKinds, surface_kind_name))
       ->default_str(surface_kind_name(options.surface))
       ->type_name("ses|sas|vdw|gaussian");
   add_spec_option(cmd, specs.probe_radius, options.probe_radius)
@@ -62,15 +70,7 @@ void add_surface_pipeline_options(CLI::App& cmd, SurfacePipelineOptions& options
   add_max_memory_option(cmd, options.blur.max_memory_bytes);
   add_spec_flag(cmd, specs.raw, options.raw);
   add_spec_option(cmd, specs.blur, options.blur_method)
-      ->transform(CLI::CheckedTransformer(
-                      [] {
-                        std::map<std::string, BlurMethod> names;
-                        for (BlurMethod method : kBlurMethods)
-                          names[blur_method_name(method)] = method;
-                        return names;
-                      }(),
-                      CLI::ignore_case)
-                      .description(""))  // the choices are the type name
+      ->transform(choice_of(kBlurMethods, blur_method_name))
       ->default_str(blur_method_name(options.blur_method))
       ->type_name("exact|fast");
   add_spec_option(cmd, specs.coarsen, options.processing.t0)

@@ -156,8 +156,8 @@ void yvv_lines(const RecursiveGaussianCoefficients& c, double* base, std::size_t
   const double f0 = c.feedback[0];
   const double f1 = c.feedback[1];
   const double f2 = c.feedback[2];
-  // Forward: the signal is zero before the start, so the recursion starts from rest.
-  for (std::size_t m = 0; m < n; ++m) {
+  // One step of the recursion on line m, in either direction: the same update both ways.
+  const auto step = [&](std::size_t m) {
     double* row = base + static_cast<std::ptrdiff_t>(m) * stride;
     for (std::size_t l = 0; l < width; ++l) {
       const double v = g * row[l] + f0 * p1[l] + f1 * p2[l] + f2 * p3[l];
@@ -166,7 +166,9 @@ void yvv_lines(const RecursiveGaussianCoefficients& c, double* base, std::size_t
       p1[l] = v;
       row[l] = v;
     }
-  }
+  };
+  // Forward: the signal is zero before the start, so the recursion starts from rest.
+  for (std::size_t m = 0; m < n; ++m) step(m);
   // p1, p2, p3 now hold w[N-1], w[N-2], w[N-3]; replace them by y[N], y[N+1], y[N+2].
   const auto& b = c.boundary;
   for (std::size_t l = 0; l < width; ++l) {
@@ -177,16 +179,7 @@ void yvv_lines(const RecursiveGaussianCoefficients& c, double* base, std::size_t
     p2[l] = b[1][0] * w1 + b[1][1] * w2 + b[1][2] * w3;
     p3[l] = b[2][0] * w1 + b[2][1] * w2 + b[2][2] * w3;
   }
-  for (std::size_t m = n; m-- > 0;) {
-    double* row = base + static_cast<std::ptrdiff_t>(m) * stride;
-    for (std::size_t l = 0; l < width; ++l) {
-      const double v = g * row[l] + f0 * p1[l] + f1 * p2[l] + f2 * p3[l];
-      p3[l] = p2[l];
-      p2[l] = p1[l];
-      p1[l] = v;
-      row[l] = v;
-    }
-  }
+  for (std::size_t m = n; m-- > 0;) step(m);
 }
 
 struct LineScratch {
