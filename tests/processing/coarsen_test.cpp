@@ -11,6 +11,7 @@
 #include "molmesh/pipeline/surface_pipeline.hpp"
 #include "molmesh/surface/surface_stats.hpp"
 #include "processing/synthetic_meshes.hpp"
+#include "support/structured_meshes.hpp"
 
 namespace molmesh {
 namespace {
@@ -96,12 +97,7 @@ TEST(Coarsen, SmallThresholdDeletesNothingAndLargeOneIsSafeOnASphere) {
 
 TEST(Coarsen, NeverShrinksAComponentBelowATetrahedron) {
   SurfaceMesh two = icosphere(Vec3::Zero(), 1.0, 1);
-  const SurfaceMesh other = icosphere(Vec3::Zero(), 1.0, 0);
-  const int offset = static_cast<int>(two.points.size());
-  for (const Vec3& p : other.points) two.points.push_back(p + Vec3(5, 0, 0));
-  for (const Triangle& t : other.triangles) {
-    two.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
-  }
+  testing::append_surface(two, icosphere(Vec3(5, 0, 0), 1.0, 0));
   CoarsenOptions options;
   options.t0 = 1e6;  // delete whatever topology and geometry allow
   options.max_passes = 50;

@@ -206,10 +206,7 @@ TEST(MeshRepair, CavityWallFacesIntoTheCavity) {
   const SurfaceMesh inner = testing::structured_cube_surface(2, 0.3, 0.7);
   const double outer_volume = 1.0;
   const double inner_volume = 0.4 * 0.4 * 0.4;
-  const int offset = static_cast<int>(outer.points.size());
-  outer.points.insert(outer.points.end(), inner.points.begin(), inner.points.end());
-  for (Triangle t : inner.triangles)
-    outer.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+  testing::append_surface(outer, inner);
   MeshRepairReport report;
   const SurfaceMesh out = repair(outer, report);
   EXPECT_EQ(report.components, 2u);
@@ -221,10 +218,7 @@ TEST(MeshRepair, PinchedVertexIsSplit) {
   // Two boxes touching at one corner: after welding, that corner joins two separate fans.
   SurfaceMesh a = testing::structured_cube_surface(1, 0.0, 1.0);
   const SurfaceMesh b = testing::structured_cube_surface(1, 1.0, 2.0);
-  const int offset = static_cast<int>(a.points.size());
-  a.points.insert(a.points.end(), b.points.begin(), b.points.end());
-  for (Triangle t : b.triangles)
-    a.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+  testing::append_surface(a, b);
   MeshRepairReport report;
   const SurfaceMesh out = repair(a, report);
   EXPECT_EQ(report.merged_vertices, 1u);

@@ -75,4 +75,21 @@ SurfaceMesh structured_cube_surface(int n, double lo, double hi) {
   return surface;
 }
 
+void append_surface(SurfaceMesh& mesh, const SurfaceMesh& part) {
+  const std::size_t points = mesh.points.size();
+  const std::size_t triangles = mesh.triangles.size();
+  const int offset = static_cast<int>(points);
+  mesh.points.insert(mesh.points.end(), part.points.begin(), part.points.end());
+  for (const Triangle& t : part.triangles)
+    mesh.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+  const auto join = [](auto& markers, std::size_t count, const auto& more, std::size_t more_count) {
+    if (markers.size() == count && more.size() == more_count)
+      markers.insert(markers.end(), more.begin(), more.end());
+    else
+      markers.clear();
+  };
+  join(mesh.vertex_markers, points, part.vertex_markers, part.points.size());
+  join(mesh.face_markers, triangles, part.face_markers, part.triangles.size());
+}
+
 }  // namespace molmesh::testing

@@ -9,12 +9,14 @@
 #include <map>
 #include <numbers>
 #include <set>
+#include <utility>
 
 #include "molmesh/core/error.hpp"
 #include "molmesh/geometry/predicates.hpp"
 #include "molmesh/tetmesh/markers.hpp"
 #include "molmesh/tetmesh/outer_sphere.hpp"
 #include "molmesh/tetmesh/tet_stats.hpp"
+#include "support/structured_meshes.hpp"
 
 namespace molmesh {
 namespace {
@@ -167,11 +169,9 @@ TEST(Tetrahedralize, FullMeshHasBothRegionsAndAnInterface) {
 TEST(Tetrahedralize, CavityIsSolventNotMolecule) {
   // A hollow ball: outer surface outward, cavity surface pointing into the cavity.
   SurfaceMesh shell = icosphere(Vec3::Zero(), 6.0, 2);
-  const SurfaceMesh cavity = icosphere(Vec3::Zero(), 2.5, 1);
-  const int offset = static_cast<int>(shell.points.size());
-  for (const auto& p : cavity.points) shell.points.push_back(p);
-  for (const auto& t : cavity.triangles)
-    shell.triangles.push_back({t[0] + offset, t[2] + offset, t[1] + offset});
+  SurfaceMesh cavity = icosphere(Vec3::Zero(), 2.5, 1);
+  for (Triangle& t : cavity.triangles) std::swap(t[1], t[2]);  // facing into the cavity
+  testing::append_surface(shell, cavity);
   const Atoms atoms = atoms_at({Vec3(4.2, 0, 0), Vec3(-4.2, 0, 0), Vec3(0, 0, 0)});
 
   TetMeshOptions o;
@@ -194,11 +194,7 @@ TEST(Tetrahedralize, CavityIsSolventNotMolecule) {
 
 TEST(Tetrahedralize, TwoSeparateSpheresAreBothMolecule) {
   SurfaceMesh two = icosphere(Vec3(-5, 0, 0), 2.0, 2);
-  const SurfaceMesh b = icosphere(Vec3(5, 0, 0), 2.0, 2);
-  const int offset = static_cast<int>(two.points.size());
-  for (const auto& p : b.points) two.points.push_back(p);
-  for (const auto& t : b.triangles)
-    two.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+  testing::append_surface(two, icosphere(Vec3(5, 0, 0), 2.0, 2));
   TetMeshOptions o;
   o.sphere_ratio = 4.0;  // size 5 Å (atoms at ±5) → radius 20 Å
   TetMeshReport r;
