@@ -35,6 +35,14 @@ GaussSeidelSmoother make_gauss_seidel(const SparseMatrix& a, int blocks,
   const Eigen::Index count = std::clamp<Eigen::Index>(
       n / std::max<Eigen::Index>(min_rows_per_block, 1), 1, std::max(blocks, 1));
   for (Eigen::Index b = 0; b <= count; ++b) s.block.push_back(b * n / count);
+  for (std::size_t b = 0; b + 1 < s.block.size(); ++b) {
+    for (Eigen::Index i = s.block[b]; i < s.block[b + 1]; ++i) {
+      // Columns are sorted: the first and last entries tell.
+      if (outer[i] < outer[i + 1] &&
+          (inner[outer[i]] < s.block[b] || inner[outer[i + 1] - 1] >= s.block[b + 1]))
+        s.cross_block_rows.push_back(i);
+    }
+  }
   return s;
 }
 
@@ -52,14 +60,20 @@ void for_each_block(const GaussSeidelSmoother& s, const Body& body) {
                     [&](std::size_t b) { body(s.block[b], s.block[b + 1]); });
 }
 
-// One sweep over every block; rows of other blocks are read from `old`.
+// One sweep over every block; rows of other blocks are read from `start`, x as it was
+// when the sweep began (with one block, x itself: no other block reads it).
 template <bool kForward>
-void sweep(const GaussSeidelSmoother& s, const Eigen::VectorXd& b, Eigen::VectorXd& x) {
+void sweep(const GaussSeidelSmoother& s, const Eigen::VectorXd& b, Eigen::VectorXd& x,
+           Eigen::VectorXd* start) {
   const int* outer = s.a->outerIndexPtr();
   const int* inner = s.a->innerIndexPtr();
   const double* values = s.a->valuePtr();
-  const Eigen::VectorXd old = s.block.size() > 2 ? x : Eigen::VectorXd();
-  const double* old_x = s.block.size() > 2 ? old.data() : x.data();
+  Eigen::VectorXd local;
+  if (s.block.size() > 2) {
+    if (!start) start = &local;
+    *start = x;
+  }
+  const double* old_x = s.block.size() > 2 ? start->data() : x.data();
   double* new_x = x.data();
   for_each_block(s, [&](Eigen::Index lo, Eigen::Index hi) {
     const auto width = static_cast<unsigned>(hi - lo);
@@ -101,12 +115,109 @@ void forward_sweep_from_zero(const GaussSeidelSmoother& s, const Eigen::VectorXd
   });
 }
 
-void forward_sweep(const GaussSeidelSmoother& s, const Eigen::VectorXd& b, Eigen::VectorXd& x) {
-  sweep<true>(s, b, x);
+void forward_sweep(const GaussSeidelSmoother& s, const Eigen::VectorXd& b, Eigen::VectorXd& x,
+                   Eigen::VectorXd* sweep_start) {
+  sweep<true>(s, b, x, sweep_start);
 }
 
-void backward_sweep(const GaussSeidelSmoother& s, const Eigen::VectorXd& b, Eigen::VectorXd& x) {
-  sweep<false>(s, b, x);
+void backward_sweep(const GaussSeidelSmoother& s, const Eigen::VectorXd& b, Eigen::VectorXd& x,
+                    Eigen::VectorXd* sweep_start) {
+  sweep<false>(s, b, x, sweep_start);
+}
+
+namespace {
+
+// The block holding row i.
+std::size_t block_of(const GaussSeidelSmoother& s, Eigen::Index i) {
+  return static_cast<std::size_t>(std::upper_bound(s.block.begin(), s.block.end(), i) -
+                                  s.block.begin()) -
+         1;
+}
+
+// For every row at a block face, in parallel: out_i += sum of a_ij term(j) over the entries
+// j in other blocks.
+template <class Term>
+void add_cross_block_terms(const GaussSeidelSmoother& s, Eigen::VectorXd& out, const Term& term) {
+  const int* outer = s.a->outerIndexPtr();
+  const int* inner = s.a->innerIndexPtr();
+  const double* values = s.a->valuePtr();
+  const auto& rows = s.cross_block_rows;
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, rows.size(), 256),
+                    [&](const tbb::blocked_range<std::size_t>& range) {
+                      for (std::size_t r = range.begin(); r != range.end(); ++r) {
+                        const Eigen::Index i = rows[r];
+                        const std::size_t b = block_of(s, i);
+                        const int lo = static_cast<int>(s.block[b]);
+                        const int hi = static_cast<int>(s.block[b + 1]);
+                        double sum = 0.0;
+                        for (int k = outer[i]; k < outer[i + 1]; ++k) {
+                          const int j = inner[k];
+                          if (j < lo || j >= hi) sum += values[k] * term(j);
+                        }
+                        out[i] += sum;
+                      }
+                    });
+}
+
+}  // namespace
+
+void forward_sweep_from_zero_with_residual(const GaussSeidelSmoother& s, const Eigen::VectorXd& b,
+                                           Eigen::VectorXd& x, Eigen::VectorXd& residual) {
+  const int* outer = s.a->outerIndexPtr();
+  const int* inner = s.a->innerIndexPtr();
+  const double* values = s.a->valuePtr();
+  x.resize(s.a->rows());
+  residual.resize(s.a->rows());
+  for_each_block(s, [&](Eigen::Index lo, Eigen::Index hi) {
+    for (Eigen::Index i = lo; i < hi; ++i) {
+      const int diagonal = s.diagonal[static_cast<std::size_t>(i)];
+      int first = outer[i];  // the first entry of this block
+      while (inner[first] < lo) ++first;
+      double sum = b[i];
+      // Left of the diagonal and inside the block: everything else is still zero.
+      for (int k = first; k < diagonal; ++k) sum -= values[k] * x[inner[k]];
+      const double xi = sum * s.inverse_diagonal[i];
+      x[i] = xi;
+      // Row i is now satisfied; the earlier rows j of the block were satisfied with x_i = 0
+      // and now miss -a_ji x_i (every contribution to residual_i comes from later rows).
+      residual[i] = 0.0;
+      for (int k = first; k < diagonal; ++k) residual[inner[k]] -= values[k] * xi;
+    }
+  });
+  add_cross_block_terms(s, residual, [&](int j) { return -x[j]; });
+}
+
+void backward_sweep_with_product(const GaussSeidelSmoother& s, const Eigen::VectorXd& b,
+                                 Eigen::VectorXd& x, Eigen::VectorXd& sweep_start,
+                                 Eigen::VectorXd& ax) {
+  const int* outer = s.a->outerIndexPtr();
+  const int* inner = s.a->innerIndexPtr();
+  const double* values = s.a->valuePtr();
+  const bool several_blocks = s.block.size() > 2;
+  if (several_blocks) sweep_start = x;
+  const double* start_x = several_blocks ? sweep_start.data() : x.data();
+  double* new_x = x.data();
+  ax.resize(s.a->rows());
+  for_each_block(s, [&](Eigen::Index lo, Eigen::Index hi) {
+    const auto width = static_cast<unsigned>(hi - lo);
+    for (Eigen::Index i = hi - 1; i >= lo; --i) {
+      const int diagonal = s.diagonal[static_cast<std::size_t>(i)];
+      double sum = b[i];
+      for (int k = outer[i]; k < outer[i + 1]; ++k) {
+        const int j = inner[k];
+        const bool here = static_cast<unsigned>(j - lo) < width;
+        sum -= values[k] * (here ? new_x[j] : start_x[j]);
+      }
+      const double delta = sum * s.inverse_diagonal[i];
+      new_x[i] += delta;
+      // Row i is satisfied now; the later rows of the block were satisfied with x_i's old
+      // value and gain a_ji delta_i (every contribution to ax_i comes from earlier rows).
+      ax[i] = b[i];
+      for (int k = diagonal + 1; k < outer[i + 1] && inner[k] < hi; ++k)
+        ax[inner[k]] += values[k] * delta;
+    }
+  });
+  if (several_blocks) add_cross_block_terms(s, ax, [&](int j) { return new_x[j] - start_x[j]; });
 }
 
 void residual_after_forward_sweep(const GaussSeidelSmoother& s, const Eigen::VectorXd* before,

@@ -27,7 +27,6 @@ SolveReport solve_reduced(const ReducedSystem& system, std::span<const SparseMat
     sizes = mg->level_sizes();
     mesh_levels = mg->mesh_levels();
     nonzeros = mg->level_nonzeros();
-    preconditioner = [mg](const Eigen::VectorXd& r, Eigen::VectorXd& z) { mg->apply(r, z); };
     if (sizes.size() < 2) {
       name = "direct (sparse LDLT)";
     } else {
@@ -43,7 +42,14 @@ SolveReport solve_reduced(const ReducedSystem& system, std::span<const SparseMat
   }
   const double setup = seconds_since(start);
   x = Eigen::VectorXd::Zero(system.rhs.size());
-  SolveReport report = preconditioned_cg(system.matrix, system.rhs, x, preconditioner, options.cg);
+  SolveReport report =
+      mg ? preconditioned_cg_with_product(
+               system.matrix, system.rhs, x,
+               [&](const Eigen::VectorXd& r, Eigen::VectorXd& z, Eigen::VectorXd& az) {
+                 mg->apply_with_product(r, z, az);
+               },
+               options.cg)
+         : preconditioned_cg(system.matrix, system.rhs, x, preconditioner, options.cg);
   report.setup_time_s = setup;
   report.preconditioner = name;
   report.level_sizes = std::move(sizes);

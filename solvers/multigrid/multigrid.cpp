@@ -3,6 +3,7 @@
 #include <Eigen/SparseCholesky>
 #include <algorithm>
 #include <cmath>
+#include <deque>
 #include <string>
 
 #include "molmesh/core/error.hpp"
@@ -56,36 +57,58 @@ SparseMatrix select_rows_and_columns(const SparseMatrix& m, std::span<const int>
 
 }  // namespace
 
+// One level's vectors in a V-cycle, kept from cycle to cycle so that a cycle allocates
+// nothing (on a 1M-tetrahedron fine level each is ~2 MB, fresh pages for every cycle).
+struct CycleWorkspace {
+  Eigen::VectorXd before;       // x before the last forward sweep (several sweeps only)
+  Eigen::VectorXd sweep_start;  // a sweep's copy of x (gauss_seidel.hpp)
+  Eigen::VectorXd residual;
+  Eigen::VectorXd coarse_rhs;
+  Eigen::VectorXd coarse_x;
+  Eigen::VectorXd correction;
+};
+
 struct MultigridPreconditioner::Impl {
-  std::vector<Level> levels;
+  // A deque, so adding a level moves none of the others (moving a Level would copy its
+  // matrices: hierarchy.hpp).
+  std::deque<Level> levels;
   Eigen::SimplicialLDLT<ColMajor> coarse_solver;
   MultigridOptions options;
   bool coarse_shifted = false;
   std::size_t mesh_levels = 0;
+  mutable std::vector<CycleWorkspace> workspace;  // one per level
 
-  void vcycle(std::size_t l, const Eigen::VectorXd& b, Eigen::VectorXd& x) const {
+  // x = V-cycle(b) from a zero guess on level l; *product = A x when asked for (level 0
+  // only: the last backward sweep gives it for half a pass over A).
+  void vcycle(std::size_t l, const Eigen::VectorXd& b, Eigen::VectorXd& x,
+              Eigen::VectorXd* product = nullptr) const {
     if (l + 1 == levels.size()) {
       x = coarse_solver.solve(b);
+      if (product) parallel_multiply(*levels[l].a, x, *product);
       return;
     }
     const Level& level = levels[l];
-    forward_sweep_from_zero(level.smoother, b, x);
-    Eigen::VectorXd before;
-    for (int s = 1; s < options.smoothing_sweeps; ++s) {
-      before = x;
-      forward_sweep(level.smoother, b, x);
+    CycleWorkspace& w = workspace[l];
+    if (options.smoothing_sweeps == 1) {
+      forward_sweep_from_zero_with_residual(level.smoother, b, x, w.residual);
+    } else {
+      forward_sweep_from_zero(level.smoother, b, x);
+      for (int s = 1; s < options.smoothing_sweeps; ++s) {
+        w.before = x;
+        forward_sweep(level.smoother, b, x, &w.sweep_start);
+      }
+      residual_after_forward_sweep(level.smoother, &w.before, x, w.residual);
     }
-    Eigen::VectorXd residual;
-    residual_after_forward_sweep(level.smoother, options.smoothing_sweeps > 1 ? &before : nullptr,
-                                 x, residual);
-    Eigen::VectorXd rc;
-    parallel_multiply(level.pt, residual, rc);
-    Eigen::VectorXd xc;
-    vcycle(l + 1, rc, xc);
-    Eigen::VectorXd correction;
-    parallel_multiply(level.p, xc, correction);
-    x += correction;
-    for (int s = 0; s < options.smoothing_sweeps; ++s) backward_sweep(level.smoother, b, x);
+    parallel_multiply(level.pt, w.residual, w.coarse_rhs);
+    vcycle(l + 1, w.coarse_rhs, w.coarse_x);
+    parallel_multiply(level.p, w.coarse_x, w.correction);
+    x += w.correction;
+    for (int s = 0; s < options.smoothing_sweeps; ++s) {
+      if (product && s + 1 == options.smoothing_sweeps)
+        backward_sweep_with_product(level.smoother, b, x, w.sweep_start, *product);
+      else
+        backward_sweep(level.smoother, b, x, &w.sweep_start);
+    }
   }
 };
 
@@ -166,21 +189,24 @@ MultigridPreconditioner::MultigridPreconditioner(const SparseMatrix& a,
       }
       if (ratio > options.max_last_coarse_ratio) break;
     }
+    if (given && given->a.rows() != static_cast<Eigen::Index>(coarse_kept.size()))
+      throw Error("multigrid: a coarse operator's size does not match its unknowns");
     const std::size_t current = levels.size() - 1;
     Level& level = levels[current];
-    level.p = select_rows_and_columns(full, rows_kept, column_index,
-                                      static_cast<Eigen::Index>(coarse_kept.size()));
+    {
+      SparseMatrix p = select_rows_and_columns(full, rows_kept, column_index,
+                                               static_cast<Eigen::Index>(coarse_kept.size()));
+      level.p.swap(p);
+    }
     level.pt = level.p.transpose();
-    Level coarse;
+    Level& coarse = levels.emplace_back();
     if (given) {
-      if (given->a.rows() != static_cast<Eigen::Index>(coarse_kept.size()))
-        throw Error("multigrid: a coarse operator's size does not match its unknowns");
-      coarse.owned = std::move(given->a);
+      coarse.owned.swap(given->a);
     } else {
-      coarse.owned = galerkin_product(level.pt, operator_of(current), level.p);
+      SparseMatrix product = galerkin_product(level.pt, operator_of(current), level.p);
+      coarse.owned.swap(product);
     }
     coarse.owned.makeCompressed();
-    levels.push_back(std::move(coarse));
     rows_kept = std::move(coarse_kept);
   }
   impl_->mesh_levels = levels.size();
@@ -192,18 +218,20 @@ MultigridPreconditioner::MultigridPreconditioner(const SparseMatrix& a,
                              options.max_aggregation_ratio * static_cast<double>(p.rows()))
       break;
     Level& level = levels[current];
-    level.p = std::move(p);
+    level.p.swap(p);
     level.pt = level.p.transpose();
-    Level coarse;
-    coarse.owned = galerkin_product(level.pt, operator_of(current), level.p);
+    Level& coarse = levels.emplace_back();
+    SparseMatrix product = galerkin_product(level.pt, operator_of(current), level.p);
+    coarse.owned.swap(product);
     coarse.owned.makeCompressed();
-    levels.push_back(std::move(coarse));
   }
   // The level list is final: operators and smoothers can point into it now.
   for (std::size_t l = 0; l < levels.size(); ++l) {
     levels[l].a = &operator_of(l);
     levels[l].smoother = make_gauss_seidel(*levels[l].a, options.smoothing_blocks);
   }
+
+  impl_->workspace.resize(levels.size());
 
   const ColMajor coarsest(*levels.back().a);
   impl_->coarse_solver.compute(coarsest);
@@ -231,6 +259,11 @@ MultigridPreconditioner& MultigridPreconditioner::operator=(MultigridPreconditio
 
 void MultigridPreconditioner::apply(const Eigen::VectorXd& r, Eigen::VectorXd& z) const {
   impl_->vcycle(0, r, z);
+}
+
+void MultigridPreconditioner::apply_with_product(const Eigen::VectorXd& r, Eigen::VectorXd& z,
+                                                 Eigen::VectorXd& az) const {
+  impl_->vcycle(0, r, z, &az);
 }
 
 bool MultigridPreconditioner::coarsest_was_shifted() const { return impl_->coarse_shifted; }

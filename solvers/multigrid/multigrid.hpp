@@ -53,6 +53,9 @@ struct MultigridOptions {
 // 276 nonzeros per row on mAChE levels 1 and 2, against 14 on level 0); re-discretised
 // operators keep the mesh stencil. The V-cycle stays symmetric; it is no longer the exact
 // Galerkin projection, so it converges somewhat slower per iteration.
+//
+// Eigen 3.4's SparseMatrix has no move constructor or move assignment (std::move copies
+// it), so code that hands these matrices on swaps them: `out.a.swap(matrix)`.
 struct MeshOperator {
   SparseMatrix a;
   std::vector<int> free_to_full;
@@ -63,8 +66,8 @@ class MultigridPreconditioner {
   // a: the fine operator on free unknowns; fine_free_to_full[i] = fine mesh vertex of
   // unknown i; prolongations[l] maps level l+1 vertices to level l vertices (all vertices,
   // as stored in Hierarchy::transfers[l].volume). An empty list gives algebraic multigrid.
-  // mesh_operators[l], when given, replaces the Galerkin operator of level l+1 (moved in:
-  // they are the coarse levels' operators from then on).
+  // mesh_operators[l], when given, replaces the Galerkin operator of level l+1 (swapped
+  // out of the list: they are the coarse levels' operators from then on).
   // `a` is not copied: it must outlive the preconditioner (CG holds it anyway).
   MultigridPreconditioner(const SparseMatrix& a, std::span<const int> fine_free_to_full,
                           std::span<const SparseMatrix> prolongations,
@@ -74,8 +77,12 @@ class MultigridPreconditioner {
   MultigridPreconditioner(MultigridPreconditioner&&) noexcept;
   MultigridPreconditioner& operator=(MultigridPreconditioner&&) noexcept;
 
-  // z = V-cycle applied to r with a zero initial guess.
+  // z = V-cycle applied to r with a zero initial guess. The cycle reuses vectors it keeps
+  // between calls, so one preconditioner must not be applied from two threads at once.
   void apply(const Eigen::VectorXd& r, Eigen::VectorXd& z) const;
+  // The same z, and az = A z from the last smoothing sweep (half a pass over A instead of a
+  // whole product; pcg.hpp's preconditioned_cg_with_product uses it).
+  void apply_with_product(const Eigen::VectorXd& r, Eigen::VectorXd& z, Eigen::VectorXd& az) const;
 
   std::vector<int> level_sizes() const;
   // Nonzeros of every level's operator (their sum over the first is the operator

@@ -42,6 +42,18 @@ void parallel_multiply(const SparseMatrix& a, const Eigen::VectorXd& x, Eigen::V
 SolveReport preconditioned_cg(const SparseMatrix& a, const Eigen::VectorXd& b, Eigen::VectorXd& x,
                               const Preconditioner& preconditioner, const SolveOptions& options);
 
+// z = M^-1 r and, from the same work, az = A z (multigrid's last smoothing sweep gives it
+// for half a pass over A; multigrid.hpp).
+using PreconditionerWithProduct =
+    std::function<void(const Eigen::VectorXd& r, Eigen::VectorXd& z, Eigen::VectorXd& az)>;
+
+// The same CG with that preconditioner: one pass over A per iteration fewer (A p is
+// updated from A z); the same iterates up to rounding.
+SolveReport preconditioned_cg_with_product(const SparseMatrix& a, const Eigen::VectorXd& b,
+                                           Eigen::VectorXd& x,
+                                           const PreconditionerWithProduct& preconditioner,
+                                           const SolveOptions& options);
+
 // Eigen's IncompleteCholesky (AMD ordering, diagonal scaling) wrapped as a Preconditioner.
 // Owns its factor; throws molmesh::Error when the factorisation fails.
 Preconditioner make_incomplete_cholesky(const SparseMatrix& a);

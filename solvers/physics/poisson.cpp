@@ -38,15 +38,17 @@ std::vector<char> dirichlet_vertices(const TetMesh& mesh, const std::vector<int>
   return dirichlet;
 }
 
-// The operator of one permittivity table on a coarse mesh, its Dirichlet vertices removed.
-MeshOperator coarse_operator(const TetMesh& mesh, std::span<const std::pair<int, double>> table,
-                             const std::vector<int>& dirichlet_markers) {
+// The operator of one permittivity table on a coarse mesh, its Dirichlet vertices removed,
+// into `out` (swapped in: hierarchy.hpp on moving sparse matrices).
+void coarse_operator(const TetMesh& mesh, std::span<const std::pair<int, double>> table,
+                     const std::vector<int>& dirichlet_markers, MeshOperator& out) {
   const SparseMatrix k = assemble_stiffness(mesh, cell_coefficients_by_region(mesh, table));
   const auto n = static_cast<Eigen::Index>(mesh.points.size());
   ReducedSystem reduced =
       reduce_dirichlet(k, Eigen::VectorXd::Zero(n), dirichlet_vertices(mesh, dirichlet_markers),
                        Eigen::VectorXd::Zero(n));
-  return {std::move(reduced.matrix), std::move(reduced.free_to_full)};
+  out.a.swap(reduced.matrix);
+  out.free_to_full = std::move(reduced.free_to_full);
 }
 
 }  // namespace
@@ -125,8 +127,8 @@ PoissonResult solve_solvation_energy(const TetMesh& mesh, const Atoms& atoms,
         if (coarse.mesh == nullptr) throw Error("Poisson: a coarse level has no mesh");
       mesh_operators.resize(coarse_levels.size());
       tbb::parallel_for(std::size_t{0}, coarse_levels.size(), [&](std::size_t l) {
-        mesh_operators[l] =
-            coarse_operator(*coarse_levels[l].mesh, table, options.dirichlet_markers);
+        coarse_operator(*coarse_levels[l].mesh, table, options.dirichlet_markers,
+                        mesh_operators[l]);
       });
     }
     const double coarse_seconds = seconds_since(coarse_start);

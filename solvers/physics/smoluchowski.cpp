@@ -62,7 +62,10 @@ Discretisation discretise(const TetMesh& mesh, std::span<const double> beta_w,
     }
     coefficient[t] = 0.25 * sum;
   }
-  out.k = assemble_stiffness(mesh, coefficient);
+  {
+    SparseMatrix k = assemble_stiffness(mesh, coefficient);
+    out.k.swap(k);  // not `out.k = ...`, which copies (hierarchy.hpp)
+  }
 
   const std::vector<unsigned> bits = boundary_vertex_marker_bits(mesh);
   const unsigned absorbing = marker_mask(options.absorbing_markers);
@@ -123,6 +126,8 @@ Discretisation discretise(const TetMesh& mesh, std::span<const double> beta_w,
   if (out.bulk_vertices == 0) {
     throw Error("Smoluchowski: no vertex lies on the outer (bulk) boundary");
   }
+  // Assigned (a copy of the matrix), where the coarse levels swap theirs: swapping the fine
+  // system in was measured slower, in setup and in the solve (docs/benchmarks.md, issue 16).
   out.system = reduce_dirichlet(out.k, Eigen::VectorXd::Zero(static_cast<Eigen::Index>(nv)),
                                 dirichlet, values);
   return out;
@@ -174,7 +179,8 @@ SmoluchowskiResult solve_smoluchowski(const TetMesh& mesh, std::span<const doubl
     std::vector<double> clamped(coarse_levels[l].beta_w.begin(), coarse_levels[l].beta_w.end());
     for (double& w : clamped) w = std::clamp(w, lowest, highest);
     Discretisation coarse = discretise(*coarse_levels[l].mesh, clamped, options, {});
-    mesh_operators[l] = {std::move(coarse.system.matrix), std::move(coarse.system.free_to_full)};
+    mesh_operators[l].a.swap(coarse.system.matrix);
+    mesh_operators[l].free_to_full = std::move(coarse.system.free_to_full);
   });
   result.unknowns = static_cast<int>(system.free_to_full.size());
   reporter.progress("smoluchowski: assemble", 1.0);

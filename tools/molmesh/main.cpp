@@ -10,11 +10,13 @@
 #include "help_formatter.hpp"
 #include "molmesh/core/atomic_file.hpp"
 #include "molmesh/core/error.hpp"
+#include "molmesh/core/malloc_tuning.hpp"
 #include "molmesh/core/version.hpp"
 #include "option_spelling.hpp"
 
 int main(int argc, char** argv) {
   using namespace molmesh::cli;
+  molmesh::keep_freed_memory_for_reuse();
   // Ctrl-C / SIGTERM delete the temporaries of outputs being written (docs/cli.md).
   molmesh::install_interrupt_cleanup();
   CLI::App app{"molmesh: molecules to adaptive surface and tetrahedral meshes (GAMer method)"};

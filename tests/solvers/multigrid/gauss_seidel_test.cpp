@@ -1,6 +1,6 @@
 // The block Gauss-Seidel smoother: the shortcuts it takes (sweep from zero, residual from
-// half the matrix) against the plain definitions, symmetry of the smoothing pair, and
-// independence of the thread count.
+// half the matrix, sweeps with their products folded in) against the plain definitions, symmetry of
+// the smoothing pair, and independence of the thread count.
 #include "solvers/multigrid/gauss_seidel.hpp"
 
 #include <gtest/gtest.h>
@@ -80,6 +80,33 @@ TEST(GaussSeidel, ShortcutsMatchTheirDefinitions) {
     EXPECT_LT((residual - (b - a * full)).norm(), 1e-11 * b.norm()) << blocks << " blocks";
     // A sweep is a contraction in the energy norm: the residual fell.
     EXPECT_LT(residual.norm(), direct.norm());
+  }
+}
+
+TEST(GaussSeidel, FusedSweepsMatchTheSweepsAndProductsTheyReplace) {
+  const SparseMatrix a = shell_operator();
+  for (int blocks : {1, 3, 8}) {
+    const GaussSeidelSmoother s = make_gauss_seidel(a, blocks, 100);
+    if (blocks > 1) {
+      EXPECT_FALSE(s.cross_block_rows.empty());
+    }
+    const Eigen::VectorXd b = random_vector(a.rows(), 6);
+    Eigen::VectorXd x, residual;
+    forward_sweep_from_zero_with_residual(s, b, x, residual);
+    Eigen::VectorXd plain;
+    forward_sweep_from_zero(s, b, plain);
+    EXPECT_LT((x - plain).norm(), 1e-13 * plain.norm()) << blocks << " blocks";
+    EXPECT_LT((residual - (b - a * x)).norm(), 1e-11 * b.norm()) << blocks << " blocks";
+
+    // A correction arrives, then the backward sweep also gives A x.
+    x += random_vector(a.rows(), 7);
+    Eigen::VectorXd plain_after = x;
+    Eigen::VectorXd scratch, ax;
+    backward_sweep_with_product(s, b, x, scratch, ax);
+    backward_sweep(s, b, plain_after);
+    EXPECT_EQ((x - plain_after).cwiseAbs().maxCoeff(), 0.0) << blocks << " blocks";
+    const Eigen::VectorXd direct = a * x;
+    EXPECT_LT((ax - direct).norm(), 1e-11 * direct.norm()) << blocks << " blocks";
   }
 }
 
