@@ -52,8 +52,13 @@ SolveReport cg(const SparseMatrix& a, const Eigen::VectorXd& b, Eigen::VectorXd&
     return report;
   }
   Eigen::VectorXd r(b.size()), z(b.size()), p(b.size()), q(b.size()), az(b.size());
-  parallel_multiply(a, x, q);
-  r = b - q;
+  // The usual start is x = 0 (solve_reduced's), where A x needs no pass over A.
+  if (x.isZero(0.0)) {
+    r = b;
+  } else {
+    parallel_multiply(a, x, q);
+    r = b - q;
+  }
   double rnorm = r.norm();
   report.residual_history.push_back(rnorm / bnorm);
   precondition(r, z, az);
