@@ -259,7 +259,7 @@ void bind_hierarchy(py::module_& m) {
           values.push_back(
               to_doubles(py::reinterpret_borrow<py::object>(value), names.back().c_str()));
         }
-        std::vector<PointField> list;
+        std::vector<PointFieldView> list;
         for (std::size_t i = 0; i < names.size(); ++i) list.push_back({names[i], values[i]});
         py::gil_scoped_release release;
         write_point_fields(path, level, list);

@@ -91,7 +91,7 @@ TEST(HierarchyHdf5, SeveralPointFieldsAreStoredAllOrNone) {
     x[i] = h.levels[0].volume.points[i].x();
     y[i] = -2.0 * static_cast<double>(i);
   }
-  const std::vector<PointField> both{{"x", x}, {"y", y}};
+  const std::vector<PointFieldView> both{{"x", x}, {"y", y}};
   write_point_fields(dir / "h.h5", 0, both);
   EXPECT_EQ(read_point_field(dir / "h.h5", 0, "x"), x);
   EXPECT_EQ(read_point_field(dir / "h.h5", 0, "y"), y);
@@ -99,9 +99,9 @@ TEST(HierarchyHdf5, SeveralPointFieldsAreStoredAllOrNone) {
 
   // A wrong length or name in the second field stores neither, not even the first.
   const std::vector<double> short_field(3);
-  const std::vector<PointField> bad_length{{"z", x}, {"w", short_field}};
+  const std::vector<PointFieldView> bad_length{{"z", x}, {"w", short_field}};
   EXPECT_THROW(write_point_fields(dir / "h.h5", 0, bad_length), Error);
-  const std::vector<PointField> bad_name{{"z", x}, {"a/b", y}};
+  const std::vector<PointFieldView> bad_name{{"z", x}, {"a/b", y}};
   EXPECT_THROW(write_point_fields(dir / "h.h5", 0, bad_name), Error);
   EXPECT_EQ(point_field_names(dir / "h.h5", 0), (std::vector<std::string>{"x", "y"}));
   const std::string text = testing::slurp(dir / "h_L0_volume.xdmf");

@@ -133,7 +133,7 @@ void add_problem_json(nlohmann::json& j, const char* problem, const CommonArgs& 
 }
 
 // Both fields of a solve go in with one rewrite of the hierarchy file, or neither does.
-void store_fields(const CommonArgs& a, const std::vector<PointField>& fields) {
+void store_fields(const CommonArgs& a, const std::vector<PointFieldView>& fields) {
   if (a.no_fields) return;
   write_point_fields(a.hierarchy, a.level, fields);
 }
@@ -167,7 +167,7 @@ void run_smoluchowski(const SmoluchowskiArgs& args, const CliContext& ctx,
   const auto& result = solved.result;
   if (!engine.writes_output) return;
   const TetMesh& mesh = hierarchy.levels[static_cast<std::size_t>(args.common.level)].volume;
-  std::vector<PointField> fields{{"concentration", values_of(result.concentration)}};
+  std::vector<PointFieldView> fields{{"concentration", values_of(result.concentration)}};
   if (!solved.beta_w.empty()) fields.push_back({"beta_W", solved.beta_w});
   store_fields(args.common, fields);
   nlohmann::json j = solvers::to_json(solved);

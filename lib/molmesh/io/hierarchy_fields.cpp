@@ -28,9 +28,9 @@ void validate_field_name(const std::string& name) {
 }  // namespace
 
 void write_point_fields(const std::filesystem::path& h5, int level,
-                        std::span<const PointField> fields) {
+                        std::span<const PointFieldView> fields) {
   if (fields.empty()) return;
-  for (const PointField& field : fields) validate_field_name(field.name);
+  for (const PointFieldView& field : fields) validate_field_name(field.name);
   {
     auto [file, levels] = open_hierarchy(h5, H5F_ACC_RDONLY);
     if (level < 0 || level >= levels) {
@@ -44,7 +44,7 @@ void write_point_fields(const std::filesystem::path& h5, int level,
       throw InputError(h5.string(), e.what());
     }
     // Every field is checked before the file is touched, so a bad one stores none.
-    for (const PointField& field : fields) {
+    for (const PointFieldView& field : fields) {
       if (points != field.values.size()) {
         throw Error("point field \"" + field.name + "\" has " +
                     std::to_string(field.values.size()) + " values but level " +
@@ -58,7 +58,7 @@ void write_point_fields(const std::filesystem::path& h5, int level,
     // for all the fields.
     Handle fapl = in_memory_access();
     Handle file(H5Fopen(h5.c_str(), H5F_ACC_RDWR, fapl.get()), H5Fclose, "cannot open for writing");
-    for (const PointField& field : fields) {
+    for (const PointFieldView& field : fields) {
       const auto dataset = field_path(level, field.name);
       if (link_exists(file.get(), dataset)) {
         check(H5Ldelete(file.get(), dataset.c_str(), H5P_DEFAULT), "cannot replace " + dataset);
@@ -79,8 +79,8 @@ void write_point_fields(const std::filesystem::path& h5, int level,
 
 void write_point_field(const std::filesystem::path& h5, int level, const std::string& name,
                        std::span<const double> values) {
-  const PointField field{name, values};
-  write_point_fields(h5, level, std::span<const PointField>(&field, 1));
+  const PointFieldView field{name, values};
+  write_point_fields(h5, level, std::span<const PointFieldView>(&field, 1));
 }
 
 std::vector<double> read_point_field(const std::filesystem::path& h5, int level,

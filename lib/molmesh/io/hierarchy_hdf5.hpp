@@ -31,7 +31,7 @@ void write_point_field(const std::filesystem::path& h5, int level, const std::st
                        std::span<const double> values);
 
 // One named field for write_point_fields; `values` is borrowed, not copied.
-struct PointField {
+struct PointFieldView {
   std::string name;
   std::span<const double> values;
 };
@@ -39,7 +39,7 @@ struct PointField {
 // Stores several fields of `level` as write_point_field does, with one rewrite of the file:
 // all of them or, when any is invalid (name, length) or the write fails, none.
 void write_point_fields(const std::filesystem::path& h5, int level,
-                        std::span<const PointField> fields);
+                        std::span<const PointFieldView> fields);
 
 // Reads a field written by write_point_field; throws InputError when it is absent.
 std::vector<double> read_point_field(const std::filesystem::path& h5, int level,
