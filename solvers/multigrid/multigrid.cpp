@@ -79,7 +79,7 @@ struct MultigridPreconditioner::Impl {
   mutable std::vector<CycleWorkspace> workspace;  // one per level
 
   // x = V-cycle(b) from a zero guess on level l; *product = A x when asked for (level 0
-  // only: the last backward sweep gives it for half a pass over A).
+  // only: the last backward sweep gives it from its own pass over A).
   void vcycle(std::size_t l, const Eigen::VectorXd& b, Eigen::VectorXd& x,
               Eigen::VectorXd* product = nullptr) const {
     if (l + 1 == levels.size()) {

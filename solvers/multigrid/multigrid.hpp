@@ -80,8 +80,8 @@ class MultigridPreconditioner {
   // z = V-cycle applied to r with a zero initial guess. The cycle reuses vectors it keeps
   // between calls, so one preconditioner must not be applied from two threads at once.
   void apply(const Eigen::VectorXd& r, Eigen::VectorXd& z) const;
-  // The same z, and az = A z from the last smoothing sweep (half a pass over A instead of a
-  // whole product; pcg.hpp's preconditioned_cg_with_product uses it).
+  // The same z, and az = A z from the last smoothing sweep (from the pass over A the sweep
+  // makes anyway, instead of a product; pcg.hpp's preconditioned_cg_with_product uses it).
   void apply_with_product(const Eigen::VectorXd& r, Eigen::VectorXd& z, Eigen::VectorXd& az) const;
 
   std::vector<int> level_sizes() const;

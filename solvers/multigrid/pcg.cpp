@@ -51,7 +51,8 @@ SolveReport cg(const SparseMatrix& a, const Eigen::VectorXd& b, Eigen::VectorXd&
     report.residual_history.push_back(0.0);
     return report;
   }
-  Eigen::VectorXd r(b.size()), z(b.size()), p(b.size()), q(b.size()), az(b.size());
+  Eigen::VectorXd r(b.size()), z(b.size()), p(b.size()), q(b.size());
+  Eigen::VectorXd az;  // sized by the preconditioner that fills it
   // The usual start is x = 0 (solve_reduced's), where A x needs no pass over A.
   if (x.isZero(0.0)) {
     r = b;

@@ -43,7 +43,7 @@ SolveReport preconditioned_cg(const SparseMatrix& a, const Eigen::VectorXd& b, E
                               const Preconditioner& preconditioner, const SolveOptions& options);
 
 // z = M^-1 r and, from the same work, az = A z (multigrid's last smoothing sweep gives it
-// for half a pass over A; multigrid.hpp).
+// from the pass over A it makes anyway; multigrid.hpp).
 using PreconditionerWithProduct =
     std::function<void(const Eigen::VectorXd& r, Eigen::VectorXd& z, Eigen::VectorXd& az)>;
 

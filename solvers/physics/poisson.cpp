@@ -39,7 +39,7 @@ std::vector<char> dirichlet_vertices(const TetMesh& mesh, const std::vector<int>
 }
 
 // The operator of one permittivity table on a coarse mesh, its Dirichlet vertices removed,
-// into `out` (swapped in: hierarchy.hpp on moving sparse matrices).
+// into `out` (swapped in: multigrid.hpp, MeshOperator, on moving sparse matrices).
 void coarse_operator(const TetMesh& mesh, std::span<const std::pair<int, double>> table,
                      const std::vector<int>& dirichlet_markers, MeshOperator& out) {
   const SparseMatrix k = assemble_stiffness(mesh, cell_coefficients_by_region(mesh, table));

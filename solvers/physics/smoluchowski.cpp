@@ -64,7 +64,7 @@ Discretisation discretise(const TetMesh& mesh, std::span<const double> beta_w,
   }
   {
     SparseMatrix k = assemble_stiffness(mesh, coefficient);
-    out.k.swap(k);  // not `out.k = ...`, which copies (hierarchy.hpp)
+    out.k.swap(k);  // not `out.k = ...`, which copies (multigrid.hpp, MeshOperator)
   }
 
   const std::vector<unsigned> bits = boundary_vertex_marker_bits(mesh);
