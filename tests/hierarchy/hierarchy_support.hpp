@@ -52,15 +52,13 @@ inline Eigen::MatrixXd coordinates(const std::vector<Vec3>& points) {
   return x;
 }
 
-// Row sums, non-empty columns, and linear reproduction: P applied to the coarse coordinates
-// gives the fine coordinates exactly except at fine vertices outside the coarse mesh,
-// which must be few and close to the coarse boundary they are projected onto (the levels'
-// molecular surfaces differ by less than `max_projection` Å). Returns the number of fine
-// vertices not reproduced.
-inline long check_volume_transfer(const SparseMatrix& p, const TetMesh& coarse, const TetMesh& fine,
-                                  double max_outside_fraction, double max_projection = 3.0) {
-  EXPECT_EQ(p.rows(), static_cast<Eigen::Index>(fine.points.size()));
-  EXPECT_EQ(p.cols(), static_cast<Eigen::Index>(coarse.points.size()));
+// A prolongation from `coarse_size` to `fine_size` vertices is a partition of unity: every
+// row sums to 1 (stops at the first row that does not, so one defect is one failure) and
+// every coarse vertex reaches some fine vertex (no empty column).
+inline void check_partition_of_unity(const SparseMatrix& p, std::size_t coarse_size,
+                                     std::size_t fine_size) {
+  EXPECT_EQ(p.rows(), static_cast<Eigen::Index>(fine_size));
+  EXPECT_EQ(p.cols(), static_cast<Eigen::Index>(coarse_size));
   Eigen::VectorXi column_count = Eigen::VectorXi::Zero(p.cols());
   for (Eigen::Index r = 0; r < p.rows(); ++r) {
     double sum = 0.0;
@@ -72,6 +70,16 @@ inline long check_volume_transfer(const SparseMatrix& p, const TetMesh& coarse, 
     if (std::abs(sum - 1.0) > 1e-12) break;
   }
   EXPECT_EQ((column_count.array() == 0).count(), 0) << "coarse vertices with empty columns";
+}
+
+// Row sums, non-empty columns, and linear reproduction: P applied to the coarse coordinates
+// gives the fine coordinates exactly except at fine vertices outside the coarse mesh,
+// which must be few and close to the coarse boundary they are projected onto (the levels'
+// molecular surfaces differ by less than `max_projection` Å). Returns the number of fine
+// vertices not reproduced.
+inline long check_volume_transfer(const SparseMatrix& p, const TetMesh& coarse, const TetMesh& fine,
+                                  double max_outside_fraction, double max_projection = 3.0) {
+  check_partition_of_unity(p, coarse.points.size(), fine.points.size());
   const Eigen::MatrixXd xf = coordinates(fine.points);
   const Eigen::MatrixXd interpolated = p * coordinates(coarse.points);
   // An arbitrary linear function, too.
@@ -97,18 +105,7 @@ inline long check_volume_transfer(const SparseMatrix& p, const TetMesh& coarse, 
 
 inline void check_surface_transfer(const SparseMatrix& p, const HierarchyLevel& coarse,
                                    const HierarchyLevel& fine) {
-  EXPECT_EQ(p.rows(), static_cast<Eigen::Index>(fine.surface.points.size()));
-  EXPECT_EQ(p.cols(), static_cast<Eigen::Index>(coarse.surface.points.size()));
-  Eigen::VectorXi column_count = Eigen::VectorXi::Zero(p.cols());
-  for (Eigen::Index r = 0; r < p.rows(); ++r) {
-    double sum = 0.0;
-    for (SparseMatrix::InnerIterator it(p, r); it; ++it) {
-      sum += it.value();
-      if (it.value() != 0.0) ++column_count[it.col()];
-    }
-    EXPECT_NEAR(sum, 1.0, 1e-12);
-  }
-  EXPECT_EQ((column_count.array() == 0).count(), 0);
+  check_partition_of_unity(p, coarse.surface.points.size(), fine.surface.points.size());
   // Provenance: coarse vertex c comes from fine vertex provenance[c] and maps by identity.
   ASSERT_EQ(coarse.surface_provenance.size(), coarse.surface.points.size());
   for (std::size_t c = 0; c < coarse.surface_provenance.size(); ++c) {

@@ -10,6 +10,7 @@
 #include "molmesh/io/read_atoms.hpp"
 #include "molmesh/pipeline/surface_pipeline.hpp"
 #include "molmesh/surface/surface_stats.hpp"
+#include "processing/coarsen_checks.hpp"
 #include "processing/synthetic_meshes.hpp"
 #include "support/structured_meshes.hpp"
 
@@ -22,6 +23,15 @@ bool on_box_edge(const Vec3& p, double size) {
     extreme += (std::abs(p[i]) < 1e-9 || std::abs(p[i] - size) < 1e-9) ? 1 : 0;
   }
   return extreme >= 2;
+}
+
+// `mesh` is `components` closed manifold spheres (Euler characteristic 2 each).
+SurfaceStats expect_closed_spheres(const SurfaceMesh& mesh, int components) {
+  const SurfaceStats stats = compute_surface_stats(mesh);
+  EXPECT_TRUE(stats.closed && stats.manifold);
+  EXPECT_EQ(stats.components, components);
+  EXPECT_EQ(stats.euler_characteristic, 2 * components);
+  return stats;
 }
 
 TEST(Coarsen, ThinsFlatFacesAndKeepsSharpRidges) {
@@ -60,19 +70,7 @@ TEST(Coarsen, KeepSpheresProtectTheirVertices) {
   const Sphere keep{Vec3(4.0, 4.0, 8.0), 2.2};  // a disc on the top face
   options.keep_spheres = {keep};
   const CoarsenResult result = coarsen(box, options);
-  std::vector<char> present(box.points.size(), 0);
-  for (std::size_t i = 0; i < result.provenance.size(); ++i) {
-    present[result.provenance[i]] = 1;
-    EXPECT_EQ(result.mesh.points[i], box.points[result.provenance[i]]);
-  }
-  std::size_t inside = 0;
-  for (std::size_t v = 0; v < box.points.size(); ++v) {
-    if (keep.contains(box.points[v])) {
-      ++inside;
-      EXPECT_TRUE(present[v]) << "vertex " << v << " inside the keep-sphere was deleted";
-    }
-  }
-  EXPECT_GT(inside, 50u);
+  EXPECT_GT(test::expect_keep_sphere_untouched(box, result, keep), 50u);
   // Away from the sphere the top face still coarsens.
   EXPECT_LT(result.mesh.points.size(), box.points.size() / 2);
 }
@@ -87,10 +85,7 @@ TEST(Coarsen, SmallThresholdDeletesNothingAndLargeOneIsSafeOnASphere) {
   lots.t0 = 5.0;
   lots.max_passes = 20;
   const CoarsenResult result = coarsen(sphere, lots);
-  const SurfaceStats stats = compute_surface_stats(result.mesh);
-  EXPECT_TRUE(stats.closed && stats.manifold);
-  EXPECT_EQ(stats.euler_characteristic, 2);
-  EXPECT_EQ(stats.components, 1);
+  const SurfaceStats stats = expect_closed_spheres(result.mesh, 1);
   EXPECT_GT(result.removed, sphere.points.size() / 2);
   EXPECT_GT(stats.volume, 0.0);
 }
@@ -102,10 +97,7 @@ TEST(Coarsen, NeverShrinksAComponentBelowATetrahedron) {
   options.t0 = 1e6;  // delete whatever topology and geometry allow
   options.max_passes = 50;
   const CoarsenResult result = coarsen(two, options);
-  const SurfaceStats stats = compute_surface_stats(result.mesh);
-  EXPECT_TRUE(stats.closed && stats.manifold);
-  EXPECT_EQ(stats.components, 2);
-  EXPECT_EQ(stats.euler_characteristic, 4);
+  expect_closed_spheres(result.mesh, 2);
   EXPECT_GE(result.mesh.points.size(), 8u);
 }
 

@@ -9,16 +9,12 @@
 #include "molmesh/surface/components.hpp"
 #include "molmesh/surface/surface_stats.hpp"
 #include "molmesh/volume/gaussian_blur.hpp"
+#include "support/atoms.hpp"
 
 namespace molmesh {
 namespace {
 
-Atom make_atom(double x, double y, double z, double r) {
-  Atom a;
-  a.center = Vec3(x, y, z);
-  a.radius = r;
-  return a;
-}
+using testing::make_atom;
 
 Grid random_grid(int n, unsigned seed) {
   Grid g;

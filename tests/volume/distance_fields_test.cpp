@@ -15,18 +15,14 @@
 #include "molmesh/volume/ball_union.hpp"
 #include "molmesh/volume/distance_transform.hpp"
 #include "molmesh/volume/ses_field.hpp"
+#include "support/atoms.hpp"
 
 namespace molmesh {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-Atom make_atom(double x, double y, double z, double r) {
-  Atom a;
-  a.center = Vec3(x, y, z);
-  a.radius = r;
-  return a;
-}
+using testing::make_atom;
 
 TEST(DistanceTransform, MatchesBruteForce) {
   const std::array<int, 3> dims{13, 11, 9};

@@ -7,16 +7,12 @@
 #include <random>
 
 #include "molmesh/core/error.hpp"
+#include "support/atoms.hpp"
 
 namespace molmesh {
 namespace {
 
-Atom make_atom(double x, double y, double z, double r) {
-  Atom a;
-  a.center = Vec3(x, y, z);
-  a.radius = r;
-  return a;
-}
+using testing::make_atom;
 
 double kernel(const Atom& a, double b, const Vec3& x) {
   return std::exp(b * ((x - a.center).squaredNorm() / (a.radius * a.radius) - 1.0));
