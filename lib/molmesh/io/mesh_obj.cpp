@@ -13,7 +13,7 @@ SurfaceMesh parse_obj(std::string_view text, const std::string& name) {
   require_no_nul(text, name);
   SurfaceMesh mesh;
   LineCursor lines(text);
-  std::string_view line;
+  std::vector<std::string_view> f;
   std::vector<long long> corners;
   // Faces may refer to vertices defined later; check indices once everything is read.
   struct Face {
@@ -21,11 +21,7 @@ SurfaceMesh parse_obj(std::string_view text, const std::string& name) {
     std::size_t line;
   };
   std::vector<Face> faces;
-  while (lines.next(line)) {
-    if (const auto hash = line.find('#'); hash != std::string_view::npos)
-      line = line.substr(0, hash);
-    const auto f = split_fields(line);
-    if (f.empty()) continue;
+  while (next_content(lines, f)) {
     const std::size_t n = lines.line_number();
     if (f[0] == "v") {
       if (f.size() < 4) throw InputError(name, n, "vertex needs 'v x y z'");

@@ -11,18 +11,6 @@ namespace {
 
 using namespace io_detail;
 
-// Next line with content, comments stripped; false at the end.
-bool next_content(LineCursor& lines, std::vector<std::string_view>& fields) {
-  std::string_view line;
-  while (lines.next(line)) {
-    if (const auto hash = line.find('#'); hash != std::string_view::npos)
-      line = line.substr(0, hash);
-    fields = split_fields(line);
-    if (!fields.empty()) return true;
-  }
-  return false;
-}
-
 long long count_field(std::string_view field, const std::string& name, std::size_t line,
                       const char* what) {
   const auto value = parse_integer(field);

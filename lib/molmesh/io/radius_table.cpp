@@ -15,12 +15,8 @@ RadiusTable read_radius_table(const std::filesystem::path& path) {
   RadiusTable table;
   table.source = name;
   LineCursor lines(text);
-  std::string_view line;
-  while (lines.next(line)) {
-    if (const auto hash = line.find('#'); hash != std::string_view::npos)
-      line = line.substr(0, hash);
-    const auto fields = split_fields(line);
-    if (fields.empty()) continue;
+  std::vector<std::string_view> fields;
+  while (next_content(lines, fields)) {
     const std::size_t n = lines.line_number();
     if (fields.size() != 2 && fields.size() != 3)
       throw InputError(name, n,

@@ -14,12 +14,8 @@ std::vector<Sphere> read_spheres(const std::filesystem::path& path) {
   require_no_nul(text, name);
   std::vector<Sphere> spheres;
   LineCursor lines(text);
-  std::string_view line;
-  while (lines.next(line)) {
-    if (const auto hash = line.find('#'); hash != std::string_view::npos)
-      line = line.substr(0, hash);
-    const auto f = split_fields(line, true);
-    if (f.empty()) continue;
+  std::vector<std::string_view> f;
+  while (next_content(lines, f, true)) {
     const std::size_t n = lines.line_number();
     if (f.size() != 4)
       throw InputError(

@@ -96,6 +96,17 @@ std::vector<std::string_view> split_fields(std::string_view line, bool commas) {
   return fields;
 }
 
+bool next_content(LineCursor& lines, std::vector<std::string_view>& fields, bool commas) {
+  std::string_view line;
+  while (lines.next(line)) {
+    if (const auto hash = line.find('#'); hash != std::string_view::npos)
+      line = line.substr(0, hash);
+    fields = split_fields(line, commas);
+    if (!fields.empty()) return true;
+  }
+  return false;
+}
+
 std::string_view trim(std::string_view s) {
   while (!s.empty() && is_blank(s.front())) s.remove_prefix(1);
   while (!s.empty() && is_blank(s.back())) s.remove_suffix(1);

@@ -52,6 +52,11 @@ constexpr bool is_blank(char c) {
 // Fields separated by runs of blanks (is_blank) and, when `commas`, commas.
 std::vector<std::string_view> split_fields(std::string_view line, bool commas = false);
 
+// The fields (split_fields) of the next line that has any once a '#' and what follows it
+// are cut off: the comment rule of OFF, OBJ, DX, radius tables and sphere lists. False at
+// the end of the text; lines.line_number() is then the line the fields came from.
+bool next_content(LineCursor& lines, std::vector<std::string_view>& fields, bool commas = false);
+
 // `s` without leading and trailing blanks (is_blank).
 std::string_view trim(std::string_view s);
 

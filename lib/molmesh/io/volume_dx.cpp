@@ -13,7 +13,6 @@ using namespace io_detail;
 Grid parse_dx(std::string_view text, const std::string& name) {
   require_no_nul(text, name);
   LineCursor lines(text);
-  std::string_view line;
   Grid grid;
   bool have_counts = false, have_origin = false, have_data = false;
   int deltas = 0;
@@ -28,11 +27,8 @@ Grid parse_dx(std::string_view text, const std::string& name) {
                        std::string("a second ") + what + " (the first is on line " +
                            std::to_string(first) + "); one grid per file");
   };
-  while (lines.next(line)) {
-    if (const auto hash = line.find('#'); hash != std::string_view::npos)
-      line = line.substr(0, hash);
-    const auto f = split_fields(line);
-    if (f.empty()) continue;
+  std::vector<std::string_view> f;
+  while (next_content(lines, f)) {
     const std::size_t n = lines.line_number();
     // A line of numbers outside the data array used to be skipped like an unknown keyword.
     // After the data they are more values than `items` (the loop below stops at the
@@ -121,6 +117,7 @@ Grid parse_dx(std::string_view text, const std::string& name) {
         return what + " " + std::to_string(file_order.size()) + " of " + std::to_string(expected) +
                " values (declared on line " + std::to_string(data_line) + ")";
       };
+      std::string_view line;  // data lines: no comments inside the array
       while (file_order.size() < expected && lines.next(line)) {
         const auto fields = split_fields(line);
         // The objects after the data began before all values came: the header's counts
