@@ -41,7 +41,7 @@ function(molmesh_reuse_precompiled_headers target host kind)
   target_precompile_headers(${target} REUSE_FROM ${host})
 endfunction()
 
-# The host for the stage libraries and the solvers.
+# The host for the stage libraries, the solvers and the test support libraries.
 function(molmesh_library_precompiled_headers target)
   molmesh_reuse_precompiled_headers(${target} molmesh_library_pch LIBRARY
     LIBRARIES Eigen3::Eigen TBB::tbb)
