@@ -1,12 +1,14 @@
 #!/usr/bin/env bash
 # One entry point for a fresh Debian 12 machine:
 #   tools/build.sh demo   install packages, build (Release), mesh the bundled molecule
-#   tools/build.sh test   install packages, build (Release), run every test (slow ones too),
-#                         then the library's own tests (every stage's but the CLI's and
-#                         molmesh-petsc's) and fuzz-corpus replays under ASan/UBSan
-#                         (build-asan-library; MOLMESH_SANITIZE=library, the default);
-#                         MOLMESH_SANITIZE=1 runs the whole fast suite and bounded fuzz runs
-#                         under them instead (build-asan), 0 neither (docs/testing.md)
+#   tools/build.sh test   install packages, build (Release), run every test: the slow and
+#                         Python tests in the Release build, the whole fast suite (CLI,
+#                         molmesh-petsc, FETK and package tests too) and the fuzz-corpus
+#                         replays in a second build under ASan/UBSan/_GLIBCXX_ASSERTIONS
+#                         (build-asan; MOLMESH_SANITIZE=1, the default). MOLMESH_SANITIZE=library
+#                         runs every test in Release and then only the library's own tests
+#                         under the sanitizers (build-asan-library); 0 every test in Release
+#                         and no sanitizer build (docs/testing.md)
 #   tools/build.sh build  install packages and build only
 # Re-running is cheap: apt skips what is installed and the build is incremental.
 set -euo pipefail
@@ -38,14 +40,16 @@ build() {
 # UndefinedBehaviorSanitizer and libstdc++ assertions, with clang so the reader fuzz targets
 # link libFuzzer; any sanitizer report fails (halt on the first one). Leaks inside Debian
 # libraries are suppressed in tools/sanitizers/lsan.supp, nothing else.
-#   library (MOLMESH_SANITIZE=library, what `test` runs by default, so CI): only the library
-#     (with the solvers), the tests that need no CLI (target sanitizer_tests: the readers and
-#     the stages listed in tests/CMakeLists.txt, _library_stages) and the fuzz targets, in
-#     build-asan-library; runs those tests and the fuzz-corpus replays.
-#   full (MOLMESH_SANITIZE=1): everything but benchmarks and Python, in build-asan; runs the
-#     fast suite, the fuzz-corpus replays and a bounded fuzz run per reader. Too slow for CI's
-#     30 min on 2 cores (docs/testing.md has the measurements).
-# MOLMESH_SANITIZE=0 skips both.
+#   full (MOLMESH_SANITIZE=1, what `test` runs by default, so CI): everything but benchmarks
+#     and Python, in build-asan; runs the fast suite (`ctest -LE slow`, the fuzz-corpus
+#     replays among it). The Release build runs the rest (slow and Python tests), so every
+#     test runs once. The bounded libFuzzer runs (`ctest -R '^fuzz_run_'` in build-asan,
+#     label slow) are not part of it: 60 s per reader (docs/testing.md).
+#   library (MOLMESH_SANITIZE=library): only the library (with the solvers), the tests that
+#     need no CLI (target sanitizer_tests: the readers and the stages listed in
+#     tests/CMakeLists.txt, _library_stages) and the fuzz targets, in build-asan-library,
+#     after every test in Release.
+# MOLMESH_SANITIZE=0 skips both and runs every test in Release.
 sanitizer_env() {
   export ASAN_OPTIONS="abort_on_error=1:detect_leaks=1:strict_string_checks=1"
   export LSAN_OPTIONS="suppressions=$here/tools/sanitizers/lsan.supp:print_suppressions=0"
@@ -79,13 +83,17 @@ sanitize_full() {
   local dir="${MOLMESH_ASAN_BUILD_DIR:-$here/build-asan}"
   sanitizer_configure "$dir"
   cmake --build "$dir" -j "$jobs"
+  # Every fast test of the Release build must exist here too, or it would run nowhere.
+  test_names() { (cd "$1" && ctest -N "${@:2}" | sed -n 's/^ *Test *#[0-9]*: //p' | sort); }
+  local missing
+  missing="$(comm -23 <(test_names "$build_dir" -LE 'slow|python') <(test_names "$dir" -LE slow))"
+  if [ -n "$missing" ]; then
+    echo "molmesh: fast tests of the Release build that the sanitizer build lacks:" >&2
+    echo "$missing" >&2
+    exit 1
+  fi
   local start=$SECONDS
-  (
-    cd "$dir"
-    sanitizer_env
-    ctest -LE slow --output-on-failure -j "$jobs" --timeout 1500
-    ctest -R '^fuzz_run_' --output-on-failure -j "$jobs"
-  )
+  (cd "$dir" && sanitizer_env && ctest -LE slow --output-on-failure -j "$jobs" --timeout 1500)
   echo "molmesh: sanitizer leg tests took $((SECONDS - start)) s"
 }
 
@@ -99,12 +107,14 @@ case "$mode" in
     "$here/tools/demo.sh" "$build_dir/tools/molmesh" "$here/examples" "$out"
     ;;
   test)
-    (cd "$build_dir" && ctest --output-on-failure -j "$jobs" --timeout 1500)
-    case "${MOLMESH_SANITIZE:-library}" in
-      1) sanitize_full ;;
-      0) ;;
-      library) sanitize_library ;;
-      *) echo "MOLMESH_SANITIZE: 0, 1 or library" >&2; exit 2 ;;
+    release_tests() { (cd "$build_dir" && ctest --output-on-failure -j "$jobs" --timeout 1500 "$@"); }
+    case "${MOLMESH_SANITIZE:-1}" in
+      # The fast suite runs under the sanitizers; what their build lacks (Python) or would
+      # run too slowly (the slow group) runs here.
+      1) release_tests -L 'slow|python' && sanitize_full ;;
+      0) release_tests ;;
+      library) release_tests && sanitize_library ;;
+      *) echo "MOLMESH_SANITIZE: 1, library or 0" >&2; exit 2 ;;
     esac
     ;;
   *) echo "usage: tools/build.sh [demo|test|build]" >&2; exit 2 ;;
