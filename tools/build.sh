@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # One entry point for a fresh Debian 12 machine:
 #   tools/build.sh demo   install packages, build (Release), mesh the bundled molecule
-#   tools/build.sh test   install packages, build (Release), run every test: the slow and
-#                         Python tests in the Release build, the whole fast suite (CLI,
+#   tools/build.sh test   install packages, build (Release), run every test: the slow
+#                         tests in the Release build, the whole fast suite (CLI, Python,
 #                         molmesh-petsc, FETK and package tests too) and the fuzz-corpus
 #                         replays in a second build under ASan/UBSan/_GLIBCXX_ASSERTIONS
 #                         (build-asan; MOLMESH_SANITIZE=1, the default). MOLMESH_SANITIZE=library
@@ -40,10 +40,10 @@ build() {
 # UndefinedBehaviorSanitizer and libstdc++ assertions, with clang so the reader fuzz targets
 # link libFuzzer; any sanitizer report fails (halt on the first one). Leaks inside Debian
 # libraries are suppressed in tools/sanitizers/lsan.supp, nothing else.
-#   full (MOLMESH_SANITIZE=1, what `test` runs by default, so CI): everything but benchmarks
-#     and Python, in build-asan; runs the fast suite (`ctest -LE slow`, the fuzz-corpus
-#     replays among it). The Release build runs the rest (slow and Python tests), so every
-#     test runs once. The bounded libFuzzer runs (`ctest -R '^fuzz_run_'` in build-asan,
+#   full (MOLMESH_SANITIZE=1, what `test` runs by default, so CI): everything but benchmarks,
+#     in build-asan; runs the fast suite (`ctest -LE slow`: the Python tests, with the
+#     shared ASan runtime preloaded into python3, and the fuzz-corpus replays among it).
+#     The Release build runs the rest (the slow tests), so every test runs once. The bounded libFuzzer runs (`ctest -R '^fuzz_run_'` in build-asan,
 #     label slow) are not part of it: 60 s per reader (docs/testing.md).
 #   library (MOLMESH_SANITIZE=library): only the library (with the solvers), the tests that
 #     need no CLI (target sanitizer_tests: the readers and the stages listed in
@@ -65,7 +65,7 @@ sanitizer_configure() {
     -DCMAKE_C_FLAGS_RELWITHDEBINFO="$flags" -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="$flags" \
     -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" \
     -DCMAKE_SHARED_LINKER_FLAGS="-fsanitize=address,undefined" \
-    -DMOLMESH_BUILD_BENCHMARKS=OFF -DMOLMESH_BUILD_PYTHON=OFF -DMOLMESH_FUZZ=ON
+    -DMOLMESH_BUILD_BENCHMARKS=OFF -DMOLMESH_BUILD_PYTHON=ON -DMOLMESH_FUZZ=ON
 }
 
 sanitize_library() {
@@ -86,7 +86,7 @@ sanitize_full() {
   # Every fast test of the Release build must exist here too, or it would run nowhere.
   test_names() { (cd "$1" && ctest -N "${@:2}" | sed -n 's/^ *Test *#[0-9]*: //p' | sort); }
   local missing
-  missing="$(comm -23 <(test_names "$build_dir" -LE 'slow|python') <(test_names "$dir" -LE slow))"
+  missing="$(comm -23 <(test_names "$build_dir" -LE slow) <(test_names "$dir" -LE slow))"
   if [ -n "$missing" ]; then
     echo "molmesh: fast tests of the Release build that the sanitizer build lacks:" >&2
     echo "$missing" >&2
@@ -109,9 +109,9 @@ case "$mode" in
   test)
     release_tests() { (cd "$build_dir" && ctest --output-on-failure -j "$jobs" --timeout 1500 "$@"); }
     case "${MOLMESH_SANITIZE:-1}" in
-      # The fast suite runs under the sanitizers; what their build lacks (Python) or would
-      # run too slowly (the slow group) runs here.
-      1) release_tests -L 'slow|python' && sanitize_full ;;
+      # The fast suite runs under the sanitizers; the slow group, which would take too
+      # long there, runs here.
+      1) release_tests -L slow && sanitize_full ;;
       0) release_tests ;;
       library) release_tests && sanitize_library ;;
       *) echo "MOLMESH_SANITIZE: 1, library or 0" >&2; exit 2 ;;

@@ -3,6 +3,8 @@
 #include <cstring>
 #include <limits>
 
+#include "casters.hpp"
+
 namespace molmesh::python {
 
 void check_shape(const py::array& array, py::ssize_t cols, const char* name) {

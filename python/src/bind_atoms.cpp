@@ -1,7 +1,6 @@
 // Atoms: read from molecule files with the CLI's selection options, or built from arrays
 // (an MD frame from MDAnalysis/mdtraj goes in without a file).
 #include <pybind11/numpy.h>
-#include <pybind11/stl/filesystem.h>
 
 #include <cmath>
 #include <limits>
@@ -9,6 +8,7 @@
 
 #include "arrays.hpp"
 #include "bindings.hpp"
+#include "casters.hpp"
 #include "errors.hpp"
 #include "molmesh/atoms/atom_option_specs.hpp"
 #include "molmesh/io/read_atoms.hpp"

@@ -1,13 +1,12 @@
 // Hierarchy objects, molmesh.hierarchy (atoms -> raw surface -> multilevel surface and
 // volume meshes with prolongations, as `molmesh hierarchy`) and molmesh.read_hierarchy.
 #include <pybind11/numpy.h>
-#include <pybind11/stl.h>
-#include <pybind11/stl/filesystem.h>
 
 #include <string>
 
 #include "arrays.hpp"
 #include "bindings.hpp"
+#include "casters.hpp"
 #include "hierarchy_objects.hpp"
 #include "molmesh/io/hierarchy_hdf5.hpp"
 #include "molmesh/pipeline/hierarchy_parameters.hpp"

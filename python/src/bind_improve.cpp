@@ -1,11 +1,10 @@
 // molmesh.improve: a user's surface mesh -> repair -> quality improvement, coarsening and
 // smoothing, the CLI's `molmesh improve` (lib/molmesh/pipeline/improve_pipeline.hpp).
-#include <pybind11/stl.h>
-
 #include <nlohmann/json.hpp>
 #include <string>
 
 #include "bindings.hpp"
+#include "casters.hpp"
 #include "molmesh/io/stats_json.hpp"
 #include "molmesh/pipeline/parameters_json.hpp"
 #include "progress.hpp"

@@ -1,8 +1,6 @@
 // Readers of every format the library reads (writers are the objects' write methods).
-#include <pybind11/stl.h>
-#include <pybind11/stl/filesystem.h>
-
 #include "bindings.hpp"
+#include "casters.hpp"
 #include "molmesh/io/msms.hpp"
 #include "molmesh/io/sphere_list.hpp"
 #include "molmesh/io/surface_mesh_io.hpp"

@@ -1,8 +1,6 @@
 // molmesh.solve_smoluchowski and molmesh.solve_poisson: the built-in P1 solvers on a level
 // of a Hierarchy, CG preconditioned by multigrid over the coarser levels, as `molmesh solve`.
 #include <pybind11/numpy.h>
-#include <pybind11/stl.h>
-#include <pybind11/stl/filesystem.h>
 
 #include <algorithm>
 #include <cmath>
@@ -10,6 +8,7 @@
 #include <string>
 
 #include "bindings.hpp"
+#include "casters.hpp"
 #include "molmesh/core/error.hpp"
 #include "molmesh/io/volume_io.hpp"
 #include "progress.hpp"

@@ -1,14 +1,13 @@
 // Surface and Volume objects, and molmesh.surface: atoms (or a volume) -> blurred volume ->
 // marching cubes -> processed surface, the CLI's `molmesh surface` pipeline.
 #include <pybind11/numpy.h>
-#include <pybind11/stl.h>
-#include <pybind11/stl/filesystem.h>
 
 #include <nlohmann/json.hpp>
 #include <string>
 
 #include "arrays.hpp"
 #include "bindings.hpp"
+#include "casters.hpp"
 #include "molmesh/core/error.hpp"
 #include "molmesh/io/msms.hpp"
 #include "molmesh/io/stats_json.hpp"

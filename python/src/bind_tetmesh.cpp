@@ -1,14 +1,13 @@
 // TetMesh objects and molmesh.tetmesh: a surface (or atoms, through the surface pipeline)
 // -> TetGen tetrahedral mesh of the molecule, the solvent or both, as `molmesh tetmesh`.
 #include <pybind11/numpy.h>
-#include <pybind11/stl.h>
-#include <pybind11/stl/filesystem.h>
 
 #include <nlohmann/json.hpp>
 #include <string>
 
 #include "arrays.hpp"
 #include "bindings.hpp"
+#include "casters.hpp"
 #include "molmesh/io/stats_json.hpp"
 #include "molmesh/io/volume_mesh_io.hpp"
 #include "molmesh/pipeline/parameters_json.hpp"

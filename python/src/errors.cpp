@@ -3,6 +3,7 @@
 #include <exception>
 #include <string>
 
+#include "casters.hpp"
 #include "molmesh/core/error.hpp"
 #include "molmesh/pipeline/all_option_specs.hpp"
 

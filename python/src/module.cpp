@@ -1,13 +1,13 @@
 // molmesh._core: the compiled half of the `molmesh` package (python/molmesh/__init__.py
 // re-exports it). docs/python.md is the user's guide.
 #include <pybind11/pybind11.h>
-#include <pybind11/stl.h>
 #include <tbb/global_control.h>
 
 #include <map>
 #include <memory>
 
 #include "bindings.hpp"
+#include "casters.hpp"
 #include "errors.hpp"
 #include "molmesh/core/version.hpp"
 #include "options.hpp"

@@ -6,7 +6,6 @@
 // The tables also produce the docstrings (with the defaults read from the struct) and
 // molmesh.defaults(name).
 #include <pybind11/pybind11.h>
-#include <pybind11/stl.h>
 
 #include <functional>
 #include <map>
@@ -14,6 +13,8 @@
 #include <type_traits>
 #include <utility>
 #include <vector>
+
+#include "casters.hpp"
 
 namespace molmesh::python {
 

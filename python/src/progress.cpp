@@ -2,6 +2,7 @@
 
 #include <string>
 
+#include "casters.hpp"
 #include "errors.hpp"
 
 namespace molmesh::python {

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "arrays.hpp"
+#include "casters.hpp"
 #include "errors.hpp"
 #include "molmesh/core/error.hpp"
 #include "molmesh/core/option_spec.hpp"

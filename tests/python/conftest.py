@@ -13,9 +13,20 @@ DATA = Path(os.environ.get("MOLMESH_TEST_DATA", Path(__file__).resolve().parents
 CLI = os.environ.get("MOLMESH_CLI", "molmesh")
 
 
+def program_env():
+    """The environment for running one of molmesh's programs. In the sanitizer build the
+    tests preload the shared AddressSanitizer runtime into Python (tests/python/CMakeLists.txt);
+    the programs carry their own static copy and refuse a second one, so it is taken out."""
+    preload = os.environ.get("MOLMESH_SANITIZER_PRELOAD")
+    if not preload:
+        return None
+    return {k: v for k, v in os.environ.items() if not (k == "LD_PRELOAD" and v == preload)}
+
+
 def run_cli(*args, expect=0):
     """Runs `molmesh -q ARGS`; returns the completed process (asserts the exit code)."""
-    proc = subprocess.run([CLI, "-q", *map(str, args)], capture_output=True, text=True)
+    proc = subprocess.run([CLI, "-q", *map(str, args)], capture_output=True, text=True,
+                          env=program_env())
     assert proc.returncode == expect, proc.stderr
     return proc
 

@@ -10,7 +10,7 @@ from pathlib import Path
 import pytest
 
 import molmesh
-from conftest import DATA
+from conftest import DATA, program_env
 
 SCRIPT = """
 import hashlib, sys
@@ -44,7 +44,7 @@ def test_installed_package_imports_from_anywhere(tmp_path):
     where, version, atoms = proc.stdout.split("\n")[:3]
     assert Path(where).resolve() == (site / "molmesh" / "__init__.py").resolve()
     cli = subprocess.run([str(prefix / "bin" / "molmesh"), "--version"], capture_output=True,
-                         text=True, check=True)
+                         text=True, check=True, env=program_env())
     assert version == molmesh.__version__ and cli.stdout.split() == ["molmesh", version]
     here = molmesh.read_atoms(DATA / "fas2.pqr")
     assert atoms == f"{len(here)} {hashlib.sha256(here.positions.tobytes()).hexdigest()}"
