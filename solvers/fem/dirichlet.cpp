@@ -22,6 +22,19 @@ unsigned marker_mask(std::span<const int> markers) {
   return mask;
 }
 
+ReducedSystem number_free_vertices(std::span<const char> is_dirichlet) {
+  ReducedSystem s;
+  s.full_to_free.assign(is_dirichlet.size(), -1);
+  for (std::size_t v = 0; v < is_dirichlet.size(); ++v) {
+    if (!is_dirichlet[v]) {
+      s.full_to_free[v] = static_cast<int>(s.free_to_full.size());
+      s.free_to_full.push_back(static_cast<int>(v));
+    }
+  }
+  if (s.free_to_full.empty()) throw Error("every vertex has a Dirichlet value: nothing to solve");
+  return s;
+}
+
 ReducedSystem reduce_dirichlet(const SparseMatrix& a, const Eigen::VectorXd& b,
                                std::span<const char> is_dirichlet, const Eigen::VectorXd& values) {
   const auto n = static_cast<std::size_t>(a.rows());
@@ -29,16 +42,8 @@ ReducedSystem reduce_dirichlet(const SparseMatrix& a, const Eigen::VectorXd& b,
       static_cast<std::size_t>(values.size()) != n) {
     throw Error("reduce_dirichlet: sizes of matrix, right-hand side and markers differ");
   }
-  ReducedSystem s;
-  s.full_to_free.assign(n, -1);
-  for (std::size_t v = 0; v < n; ++v) {
-    if (!is_dirichlet[v]) {
-      s.full_to_free[v] = static_cast<int>(s.free_to_full.size());
-      s.free_to_full.push_back(static_cast<int>(v));
-    }
-  }
+  ReducedSystem s = number_free_vertices(is_dirichlet);
   const auto nf = static_cast<Eigen::Index>(s.free_to_full.size());
-  if (nf == 0) throw Error("every vertex has a Dirichlet value: nothing to solve");
   s.rhs.resize(nf);
   // Free rows keep their order and columns are renumbered monotonically, so the reduced
   // matrix is written row by row, already sorted, straight into its storage (sized for

@@ -27,6 +27,11 @@ struct ReducedSystem {
   Eigen::VectorXd rhs;            // b_f - A_fd g_d
 };
 
+// The numbering of the free vertices (is_dirichlet[v] == 0), in vertex order: a
+// ReducedSystem's free_to_full and full_to_free, its matrix and rhs left empty. Throws
+// molmesh::Error when no vertex is free.
+ReducedSystem number_free_vertices(std::span<const char> is_dirichlet);
+
 // is_dirichlet[v] != 0 marks Dirichlet vertices; values[v] is used only there.
 ReducedSystem reduce_dirichlet(const SparseMatrix& a, const Eigen::VectorXd& b,
                                std::span<const char> is_dirichlet, const Eigen::VectorXd& values);

@@ -86,14 +86,61 @@ struct RowGatherer {
   }
 };
 
+// Row `v` of one cell's stiffness up to the factor k/(6 det): n_a . n_b for every vertex b
+// of the cell, where n_b = det * grad(phi_b) is the (inward, unnormalised) normal of the
+// face opposite b and a is v's place in the cell. K_ab = k |T| g_a.g_b = k n_a.n_b / (6 det),
+// so one division per cell visit (tet_geometry's gradients need nine).
+struct StiffnessRow {
+  std::array<double, 4> dots;
+  double det = 0.0;  // 6 |T|, signed
+};
+
+StiffnessRow stiffness_row(const TetMesh& mesh, const Tetrahedron& tet, std::size_t v) {
+  const Vec3& p0 = mesh.points[static_cast<std::size_t>(tet[0])];
+  const Vec3 e1 = mesh.points[static_cast<std::size_t>(tet[1])] - p0;
+  const Vec3 e2 = mesh.points[static_cast<std::size_t>(tet[2])] - p0;
+  const Vec3 e3 = mesh.points[static_cast<std::size_t>(tet[3])] - p0;
+  std::array<Vec3, 4> n;
+  n[1] = e2.cross(e3);
+  n[2] = e3.cross(e1);
+  n[3] = e1.cross(e2);
+  n[0] = -(n[1] + n[2] + n[3]);
+  std::size_t a = 0;  // v's place in the cell
+  while (a < 3 && static_cast<std::size_t>(tet[a]) != v) ++a;
+  StiffnessRow row;
+  row.det = e1.dot(n[1]);
+  for (std::size_t b = 0; b < 4; ++b) row.dots[b] = n[a].dot(n[b]);
+  return row;
+}
+
 }  // namespace
 
-SparseMatrix assemble_stiffness(const TetMesh& mesh, std::span<const double> cell_coefficient) {
+SparseMatrix assemble_stiffness(const TetMesh& mesh, std::span<const double> cell_coefficient,
+                                std::span<const int> kept_index) {
   const std::size_t nt = mesh.tetrahedra.size();
+  const std::size_t nv = mesh.points.size();
   if (cell_coefficient.size() != nt) {
     throw Error("stiffness assembly: " + std::to_string(cell_coefficient.size()) +
                 " coefficients for " + std::to_string(nt) + " tetrahedra");
   }
+  const bool keeps_all = kept_index.empty();
+  int kept = keeps_all ? static_cast<int>(nv) : 0;
+  if (!keeps_all) {
+    if (kept_index.size() != nv) {
+      throw Error("stiffness assembly: " + std::to_string(kept_index.size()) +
+                  " kept-vertex indices for " + std::to_string(nv) + " vertices");
+    }
+    // Kept vertices numbered 0, 1, 2, ... in vertex order, so sorted vertex columns stay
+    // sorted after renumbering.
+    for (int index : kept_index) {
+      if (index < 0) continue;
+      if (index != kept) {
+        throw Error("stiffness assembly: kept vertices must be numbered in vertex order");
+      }
+      ++kept;
+    }
+  }
+  auto index_of = [&](std::size_t v) { return keeps_all ? static_cast<int>(v) : kept_index[v]; };
   const VertexCells around = vertex_cells(mesh);
   // Every row gathers its entries from the cells around its vertex. Rows are independent,
   // so they are built in parallel without atomics, and each entry is summed in increasing
@@ -102,56 +149,64 @@ SparseMatrix assemble_stiffness(const TetMesh& mesh, std::span<const double> cel
   // writing and re-reading 80 bytes per cell (and, in a fresh process, than faulting in
   // those pages). (A triplet list through setFromTriplets, the obvious alternative, moved
   // 16 triplets per cell through memory several times and was 5-10x slower.)
-  const std::size_t nv = mesh.points.size();
-  const auto n = static_cast<Eigen::Index>(nv);
   tbb::enumerable_thread_specific<RowGatherer> gatherers([nv] { return RowGatherer(nv); });
   constexpr std::size_t kGrain = 1024;
-  SparseMatrix k(n, n);
+  SparseMatrix k(kept, kept);
   int* outer = k.outerIndexPtr();
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, nv, kGrain),
                     [&](const tbb::blocked_range<std::size_t>& rows) {
                       RowGatherer& g = gatherers.local();
                       for (std::size_t v = rows.begin(); v != rows.end(); ++v) {
+                        const int row = index_of(v);
+                        if (row < 0) continue;
                         g.gather(mesh, around, v);
-                        outer[v + 1] = static_cast<int>(g.columns.size());
+                        int count = 0;
+                        for (int u : g.columns) count += index_of(static_cast<std::size_t>(u)) >= 0;
+                        outer[row + 1] = count;
                       }
                     });
   outer[0] = 0;
-  for (std::size_t v = 0; v < nv; ++v) outer[v + 1] += outer[v];
-  k.resizeNonZeros(outer[nv]);
+  for (int r = 0; r < kept; ++r) outer[r + 1] += outer[r];
+  k.resizeNonZeros(outer[kept]);
   int* inner = k.innerIndexPtr();
   double* values = k.valuePtr();
   // The second pass gathers again: seen_in_row must forget the first.
   for (RowGatherer& g : gatherers) std::fill(g.seen_in_row.begin(), g.seen_in_row.end(), -1);
-  tbb::parallel_for(
-      tbb::blocked_range<std::size_t>(0, nv, kGrain),
-      [&](const tbb::blocked_range<std::size_t>& rows) {
-        RowGatherer& g = gatherers.local();
-        for (std::size_t v = rows.begin(); v != rows.end(); ++v) {
-          g.gather(mesh, around, v);
-          std::sort(g.columns.begin(), g.columns.end());
-          const auto first = static_cast<std::size_t>(outer[v]);
-          for (std::size_t j = 0; j < g.columns.size(); ++j) {
-            inner[first + j] = g.columns[j];
-            values[first + j] = 0.0;
-            g.place[static_cast<std::size_t>(g.columns[j])] = static_cast<int>(first + j);
-          }
-          for (int c = around.start[v]; c < around.start[v + 1]; ++c) {
-            const auto t = static_cast<std::size_t>(around.cell[static_cast<std::size_t>(c)]);
-            const TetGeometry geometry = tet_geometry(mesh, t);
-            if (!(geometry.volume > 0.0) || !std::isfinite(geometry.volume))
-              g.first_bad_cell = std::min(g.first_bad_cell, t);
-            const Tetrahedron& tet = mesh.tetrahedra[t];
-            std::size_t a = 0;  // v's place in the cell
-            while (a < 3 && static_cast<std::size_t>(tet[a]) != v) ++a;
-            const double w = cell_coefficient[t] * geometry.volume;
-            for (std::size_t b = 0; b < 4; ++b) {
-              values[g.place[static_cast<std::size_t>(tet[b])]] +=
-                  w * geometry.gradients[a].dot(geometry.gradients[b]);
-            }
-          }
-        }
-      });
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, nv, kGrain),
+                    [&](const tbb::blocked_range<std::size_t>& rows) {
+                      RowGatherer& g = gatherers.local();
+                      for (std::size_t v = rows.begin(); v != rows.end(); ++v) {
+                        const int row = index_of(v);
+                        if (row < 0) continue;
+                        g.gather(mesh, around, v);
+                        std::sort(g.columns.begin(), g.columns.end());
+                        auto next = static_cast<std::size_t>(outer[row]);
+                        for (int u : g.columns) {
+                          const auto uu = static_cast<std::size_t>(u);
+                          const int column = index_of(uu);
+                          if (column < 0) {
+                            g.place[uu] = -1;
+                            continue;
+                          }
+                          inner[next] = column;
+                          values[next] = 0.0;
+                          g.place[uu] = static_cast<int>(next++);
+                        }
+                        for (int c = around.start[v]; c < around.start[v + 1]; ++c) {
+                          const auto t =
+                              static_cast<std::size_t>(around.cell[static_cast<std::size_t>(c)]);
+                          const Tetrahedron& tet = mesh.tetrahedra[t];
+                          const StiffnessRow entries = stiffness_row(mesh, tet, v);
+                          if (!(entries.det > 0.0) || !std::isfinite(entries.det))
+                            g.first_bad_cell = std::min(g.first_bad_cell, t);
+                          const double scale = cell_coefficient[t] / (6.0 * entries.det);
+                          for (std::size_t b = 0; b < 4; ++b) {
+                            const int place = g.place[static_cast<std::size_t>(tet[b])];
+                            if (place >= 0) values[place] += scale * entries.dots[b];
+                          }
+                        }
+                      }
+                    });
   std::size_t first_bad_cell = std::numeric_limits<std::size_t>::max();
   for (const RowGatherer& g : gatherers)
     first_bad_cell = std::min(first_bad_cell, g.first_bad_cell);

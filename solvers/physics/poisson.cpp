@@ -42,13 +42,12 @@ std::vector<char> dirichlet_vertices(const TetMesh& mesh, const std::vector<int>
 // into `out` (swapped in: multigrid.hpp, MeshOperator, on moving sparse matrices).
 void coarse_operator(const TetMesh& mesh, std::span<const std::pair<int, double>> table,
                      const std::vector<int>& dirichlet_markers, MeshOperator& out) {
-  const SparseMatrix k = assemble_stiffness(mesh, cell_coefficients_by_region(mesh, table));
-  const auto n = static_cast<Eigen::Index>(mesh.points.size());
-  ReducedSystem reduced =
-      reduce_dirichlet(k, Eigen::VectorXd::Zero(n), dirichlet_vertices(mesh, dirichlet_markers),
-                       Eigen::VectorXd::Zero(n));
-  out.a.swap(reduced.matrix);
-  out.free_to_full = std::move(reduced.free_to_full);
+  // Only the free-free block: the whole matrix and its reduced copy are never built.
+  const ReducedSystem numbering = number_free_vertices(dirichlet_vertices(mesh, dirichlet_markers));
+  SparseMatrix a =
+      assemble_stiffness(mesh, cell_coefficients_by_region(mesh, table), numbering.full_to_free);
+  out.a.swap(a);
+  out.free_to_full = numbering.free_to_full;
 }
 
 }  // namespace

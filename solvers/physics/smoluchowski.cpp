@@ -18,9 +18,13 @@ namespace molmesh::solvers {
 
 namespace {
 
+// The fine level needs the whole stiffness matrix (the flux is its residual at the absorbing
+// vertices); a coarse level needs only the reduced one.
+enum class WholeMatrix { kNeeded, kNotNeeded };
+
 // The assembled Slotboom operator of one mesh with its boundary conditions.
 struct Discretisation {
-  SparseMatrix k;  // un-reduced stiffness
+  SparseMatrix k;  // un-reduced stiffness (empty for WholeMatrix::kNotNeeded)
   std::vector<char> dirichlet, is_absorbing, in_solvent;
   Eigen::VectorXd values;
   ReducedSystem system;
@@ -28,7 +32,8 @@ struct Discretisation {
 };
 
 Discretisation discretise(const TetMesh& mesh, std::span<const double> beta_w,
-                          const SmoluchowskiOptions& options, const Reporter& reporter) {
+                          const SmoluchowskiOptions& options, const Reporter& reporter,
+                          WholeMatrix matrix) {
   const std::size_t nv = mesh.points.size();
   if (!beta_w.empty() && beta_w.size() != nv) {
     throw Error("Smoluchowski: " + std::to_string(beta_w.size()) + " potential values for " +
@@ -61,10 +66,6 @@ Discretisation discretise(const TetMesh& mesh, std::span<const double> beta_w,
       in_solvent[static_cast<std::size_t>(v)] = 1;
     }
     coefficient[t] = 0.25 * sum;
-  }
-  {
-    SparseMatrix k = assemble_stiffness(mesh, coefficient);
-    out.k.swap(k);  // not `out.k = ...`, which copies (multigrid.hpp, MeshOperator)
   }
 
   const std::vector<unsigned> bits = boundary_vertex_marker_bits(mesh);
@@ -126,8 +127,20 @@ Discretisation discretise(const TetMesh& mesh, std::span<const double> beta_w,
   if (out.bulk_vertices == 0) {
     throw Error("Smoluchowski: no vertex lies on the outer (bulk) boundary");
   }
-  // Assigned (a copy of the matrix), where the coarse levels swap theirs: swapping the fine
-  // system in was measured slower, in setup and in the solve (docs/benchmarks.md, issue 16).
+  if (matrix == WholeMatrix::kNotNeeded) {
+    // A coarse level: only the free-free block, assembled directly (no whole matrix and no
+    // reduced copy of it, whose fresh pages cost more than the arithmetic; issue 16).
+    out.system = number_free_vertices(dirichlet);
+    SparseMatrix a = assemble_stiffness(mesh, coefficient, out.system.full_to_free);
+    out.system.matrix.swap(a);  // not `= ...`, which copies (multigrid.hpp, MeshOperator)
+    return out;
+  }
+  {
+    SparseMatrix k = assemble_stiffness(mesh, coefficient);
+    out.k.swap(k);
+  }
+  // Assigned (a copy of the matrix): swapping the fine system in was measured slower, in
+  // setup and in the solve (docs/benchmarks.md, issue 16).
   out.system = reduce_dirichlet(out.k, Eigen::VectorXd::Zero(static_cast<Eigen::Index>(nv)),
                                 dirichlet, values);
   return out;
@@ -145,7 +158,7 @@ SmoluchowskiResult solve_smoluchowski(const TetMesh& mesh, std::span<const doubl
   }
   reporter.progress("smoluchowski: assemble", 0.0);
   auto bw = [&](std::size_t v) { return beta_w.empty() ? 0.0 : beta_w[v]; };
-  Discretisation fine = discretise(mesh, beta_w, options, reporter);
+  Discretisation fine = discretise(mesh, beta_w, options, reporter, WholeMatrix::kNeeded);
   SmoluchowskiResult result;
   result.absorbing_vertices = fine.absorbing_vertices;
   result.bulk_vertices = fine.bulk_vertices;
@@ -178,7 +191,8 @@ SmoluchowskiResult solve_smoluchowski(const TetMesh& mesh, std::span<const doubl
   tbb::parallel_for(std::size_t{0}, coarse_levels.size(), [&](std::size_t l) {
     std::vector<double> clamped(coarse_levels[l].beta_w.begin(), coarse_levels[l].beta_w.end());
     for (double& w : clamped) w = std::clamp(w, lowest, highest);
-    Discretisation coarse = discretise(*coarse_levels[l].mesh, clamped, options, {});
+    Discretisation coarse =
+        discretise(*coarse_levels[l].mesh, clamped, options, {}, WholeMatrix::kNotNeeded);
     mesh_operators[l].a.swap(coarse.system.matrix);
     mesh_operators[l].free_to_full = std::move(coarse.system.free_to_full);
   });

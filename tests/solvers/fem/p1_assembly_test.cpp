@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "molmesh/core/error.hpp"
+#include "solvers/fem/dirichlet.hpp"
 #include "solvers/shell_mesh.hpp"
 
 namespace molmesh::solvers {
@@ -72,6 +73,41 @@ TEST(P1Assembly, RowGatherEqualsCellByCellScatter) {
       previous = static_cast<int>(it.col());
     }
   }
+}
+
+// The coarse levels assemble only the free-free block: it must be reduce_dirichlet's block of
+// the whole matrix, pattern and values, with every third vertex and the boundary left out.
+TEST(P1Assembly, KeptBlockEqualsTheReducedWholeMatrix) {
+  const auto shell = small_ball_and_shell();
+  const TetMesh& m = shell.mesh;
+  std::vector<double> coefficient(m.tetrahedra.size());
+  for (std::size_t t = 0; t < coefficient.size(); ++t) coefficient[t] = 1.0 + 0.1 * double(t % 5);
+  std::vector<char> dirichlet(m.points.size(), 0);
+  for (std::size_t v = 0; v < dirichlet.size(); v += 3) dirichlet[v] = 1;
+  for (const auto& face : m.boundary_faces)
+    for (int v : face) dirichlet[static_cast<std::size_t>(v)] = 1;
+  const auto n = static_cast<Eigen::Index>(m.points.size());
+  const ReducedSystem reduced =
+      reduce_dirichlet(assemble_stiffness(m, coefficient), Eigen::VectorXd::Zero(n), dirichlet,
+                       Eigen::VectorXd::Zero(n));
+  const ReducedSystem numbering = number_free_vertices(dirichlet);
+  ASSERT_EQ(numbering.free_to_full, reduced.free_to_full);
+  const SparseMatrix block = assemble_stiffness(m, coefficient, numbering.full_to_free);
+  ASSERT_EQ(block.rows(), reduced.matrix.rows());
+  ASSERT_EQ(block.nonZeros(), reduced.matrix.nonZeros());
+  for (Eigen::Index i = 0; i < block.rows(); ++i) {
+    SparseMatrix::InnerIterator want(reduced.matrix, i);
+    for (SparseMatrix::InnerIterator got(block, i); got; ++got, ++want) {
+      ASSERT_TRUE(want) << "row " << i;
+      EXPECT_EQ(got.col(), want.col()) << "row " << i;
+      EXPECT_NEAR(got.value(), want.value(), 1e-13 * std::abs(want.value()) + 1e-300);
+    }
+    EXPECT_FALSE(want) << "row " << i;
+  }
+  // A numbering out of vertex order would leave columns unsorted: refused.
+  std::vector<int> shuffled = numbering.full_to_free;
+  std::swap(shuffled[numbering.free_to_full[0]], shuffled[numbering.free_to_full[1]]);
+  EXPECT_THROW(assemble_stiffness(m, coefficient, shuffled), Error);
 }
 
 TEST(P1Assembly, RejectsCellsWithVerticesOutsideTheMesh) {
