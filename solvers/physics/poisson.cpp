@@ -1,7 +1,5 @@
 #include "solvers/physics/poisson.hpp"
 
-#include <tbb/parallel_for.h>
-
 #include <chrono>
 #include <cmath>
 #include <numbers>
@@ -125,10 +123,10 @@ PoissonResult solve_solvation_energy(const TetMesh& mesh, const Atoms& atoms,
       for (const CoarseLevel& coarse : coarse_levels)
         if (coarse.mesh == nullptr) throw Error("Poisson: a coarse level has no mesh");
       mesh_operators.resize(coarse_levels.size());
-      tbb::parallel_for(std::size_t{0}, coarse_levels.size(), [&](std::size_t l) {
+      // One level after the other, as in smoluchowski.cpp (memory reuse beats overlap).
+      for (std::size_t l = 0; l < coarse_levels.size(); ++l)
         coarse_operator(*coarse_levels[l].mesh, table, options.dirichlet_markers,
                         mesh_operators[l]);
-      });
     }
     const double coarse_seconds = seconds_since(coarse_start);
     Eigen::VectorXd x;

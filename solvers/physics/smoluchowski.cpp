@@ -1,7 +1,5 @@
 #include "solvers/physics/smoluchowski.hpp"
 
-#include <tbb/parallel_for.h>
-
 #include <algorithm>
 #include <boost/pending/disjoint_sets.hpp>
 #include <chrono>
@@ -171,8 +169,10 @@ SmoluchowskiResult solve_smoluchowski(const TetMesh& mesh, std::span<const doubl
   const auto& values = fine.values;
   // Discretising the coarse meshes is part of the multigrid setup: timed and counted there.
   const auto coarse_start = std::chrono::steady_clock::now();
-  // Levels are independent; discretising them side by side also overlaps the serial parts
-  // of assembly (the sparse matrix build).
+  // One level after the other, on this thread (each assembly is parallel inside): the
+  // levels then reuse the memory the fine level freed, where side by side the worker
+  // threads' malloc arenas handed out fresh pages, slower on the 1.5M-tet benchmark
+  // (docs/benchmarks.md, issue 16).
   // Only multigrid uses them.
   if (options.solver.preconditioning != Preconditioning::kMultigrid) coarse_levels = {};
   std::vector<MeshOperator> mesh_operators(coarse_levels.size());
@@ -188,14 +188,14 @@ SmoluchowskiResult solve_smoluchowski(const TetMesh& mesh, std::span<const doubl
     lowest = *lo;
     highest = *hi;
   }
-  tbb::parallel_for(std::size_t{0}, coarse_levels.size(), [&](std::size_t l) {
+  for (std::size_t l = 0; l < coarse_levels.size(); ++l) {
     std::vector<double> clamped(coarse_levels[l].beta_w.begin(), coarse_levels[l].beta_w.end());
     for (double& w : clamped) w = std::clamp(w, lowest, highest);
     Discretisation coarse =
         discretise(*coarse_levels[l].mesh, clamped, options, {}, WholeMatrix::kNotNeeded);
     mesh_operators[l].a.swap(coarse.system.matrix);
     mesh_operators[l].free_to_full = std::move(coarse.system.free_to_full);
-  });
+  }
   result.unknowns = static_cast<int>(system.free_to_full.size());
   reporter.progress("smoluchowski: assemble", 1.0);
   reporter.progress("smoluchowski: solve", 0.0);
