@@ -153,18 +153,24 @@ SparseMatrix assemble_stiffness(const TetMesh& mesh, std::span<const double> cel
   constexpr std::size_t kGrain = 1024;
   SparseMatrix k(kept, kept);
   int* outer = k.outerIndexPtr();
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, nv, kGrain),
-                    [&](const tbb::blocked_range<std::size_t>& rows) {
-                      RowGatherer& g = gatherers.local();
-                      for (std::size_t v = rows.begin(); v != rows.end(); ++v) {
-                        const int row = index_of(v);
-                        if (row < 0) continue;
-                        g.gather(mesh, around, v);
-                        int count = 0;
-                        for (int u : g.columns) count += index_of(static_cast<std::size_t>(u)) >= 0;
-                        outer[row + 1] = count;
-                      }
-                    });
+  // Runs row_body(gatherer, v, row) for every kept vertex v, its cells' vertices gathered.
+  auto for_each_kept_row = [&](auto&& row_body) {
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, nv, kGrain),
+                      [&](const tbb::blocked_range<std::size_t>& rows) {
+                        RowGatherer& g = gatherers.local();
+                        for (std::size_t v = rows.begin(); v != rows.end(); ++v) {
+                          const int row = index_of(v);
+                          if (row < 0) continue;
+                          g.gather(mesh, around, v);
+                          row_body(g, v, row);
+                        }
+                      });
+  };
+  for_each_kept_row([&](RowGatherer& g, std::size_t, int row) {
+    int count = 0;
+    for (int u : g.columns) count += index_of(static_cast<std::size_t>(u)) >= 0;
+    outer[row + 1] = count;
+  });
   outer[0] = 0;
   for (int r = 0; r < kept; ++r) outer[r + 1] += outer[r];
   k.resizeNonZeros(outer[kept]);
@@ -172,41 +178,33 @@ SparseMatrix assemble_stiffness(const TetMesh& mesh, std::span<const double> cel
   double* values = k.valuePtr();
   // The second pass gathers again: seen_in_row must forget the first.
   for (RowGatherer& g : gatherers) std::fill(g.seen_in_row.begin(), g.seen_in_row.end(), -1);
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, nv, kGrain),
-                    [&](const tbb::blocked_range<std::size_t>& rows) {
-                      RowGatherer& g = gatherers.local();
-                      for (std::size_t v = rows.begin(); v != rows.end(); ++v) {
-                        const int row = index_of(v);
-                        if (row < 0) continue;
-                        g.gather(mesh, around, v);
-                        std::sort(g.columns.begin(), g.columns.end());
-                        auto next = static_cast<std::size_t>(outer[row]);
-                        for (int u : g.columns) {
-                          const auto uu = static_cast<std::size_t>(u);
-                          const int column = index_of(uu);
-                          if (column < 0) {
-                            g.place[uu] = -1;
-                            continue;
-                          }
-                          inner[next] = column;
-                          values[next] = 0.0;
-                          g.place[uu] = static_cast<int>(next++);
-                        }
-                        for (int c = around.start[v]; c < around.start[v + 1]; ++c) {
-                          const auto t =
-                              static_cast<std::size_t>(around.cell[static_cast<std::size_t>(c)]);
-                          const Tetrahedron& tet = mesh.tetrahedra[t];
-                          const StiffnessRow entries = stiffness_row(mesh, tet, v);
-                          if (!(entries.det > 0.0) || !std::isfinite(entries.det))
-                            g.first_bad_cell = std::min(g.first_bad_cell, t);
-                          const double scale = cell_coefficient[t] / (6.0 * entries.det);
-                          for (std::size_t b = 0; b < 4; ++b) {
-                            const int place = g.place[static_cast<std::size_t>(tet[b])];
-                            if (place >= 0) values[place] += scale * entries.dots[b];
-                          }
-                        }
-                      }
-                    });
+  for_each_kept_row([&](RowGatherer& g, std::size_t v, int row) {
+    std::sort(g.columns.begin(), g.columns.end());
+    auto next = static_cast<std::size_t>(outer[row]);
+    for (int u : g.columns) {
+      const auto uu = static_cast<std::size_t>(u);
+      const int column = index_of(uu);
+      if (column < 0) {
+        g.place[uu] = -1;
+        continue;
+      }
+      inner[next] = column;
+      values[next] = 0.0;
+      g.place[uu] = static_cast<int>(next++);
+    }
+    for (int c = around.start[v]; c < around.start[v + 1]; ++c) {
+      const auto t = static_cast<std::size_t>(around.cell[static_cast<std::size_t>(c)]);
+      const Tetrahedron& tet = mesh.tetrahedra[t];
+      const StiffnessRow entries = stiffness_row(mesh, tet, v);
+      if (!(entries.det > 0.0) || !std::isfinite(entries.det))
+        g.first_bad_cell = std::min(g.first_bad_cell, t);
+      const double scale = cell_coefficient[t] / (6.0 * entries.det);
+      for (std::size_t b = 0; b < 4; ++b) {
+        const int place = g.place[static_cast<std::size_t>(tet[b])];
+        if (place >= 0) values[place] += scale * entries.dots[b];
+      }
+    }
+  });
   std::size_t first_bad_cell = std::numeric_limits<std::size_t>::max();
   for (const RowGatherer& g : gatherers)
     first_bad_cell = std::min(first_bad_cell, g.first_bad_cell);
