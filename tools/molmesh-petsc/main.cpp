@@ -4,13 +4,16 @@
 // Everything after `--` goes to PETSc's options database (-ksp_monitor, -pc_type gamg,
 // -mg_levels_ksp_type chebyshev, -log_view, ...); rank 0 prints and writes the output.
 #include <petscsys.h>
+#include <tbb/global_control.h>
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <cstdio>
 #include <cstring>
 #include <exception>
 #include <memory>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "cli_context.hpp"
@@ -43,6 +46,21 @@ int main(int argc, char** argv) {
   PetscMPIInt rank = 0, size = 1;
   MPI_Comm_rank(PETSC_COMM_WORLD, &rank);
   MPI_Comm_size(PETSC_COMM_WORLD, &size);
+  // Every rank reads the hierarchy and runs molmesh's threaded stages (assembly, the coarse
+  // levels, the multigrid setup); with TBB's default each rank would use every core of the
+  // node, so N ranks on a node would run N times as many threads as cores. Each rank gets
+  // its share of the node's cores instead (results do not depend on it: docs/testing.md).
+  MPI_Comm node = MPI_COMM_NULL;
+  int ranks_on_node = 1;
+  if (MPI_Comm_split_type(PETSC_COMM_WORLD, MPI_COMM_TYPE_SHARED, rank, MPI_INFO_NULL, &node) ==
+      MPI_SUCCESS) {
+    MPI_Comm_size(node, &ranks_on_node);
+    MPI_Comm_free(&node);
+  }
+  const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
+  const tbb::global_control threads_per_rank(
+      tbb::global_control::max_allowed_parallelism,
+      std::max<std::size_t>(1, cores / static_cast<unsigned>(std::max(1, ranks_on_node))));
 
   CLI::App app{
       "molmesh-petsc: molmesh's solvers on PETSc (KSPCG + PCMG on the hierarchy's levels) under "
