@@ -99,6 +99,10 @@ TEST(OptionRanges, OversizedGridsAndMeshesStopAtOnceWithTheMemoryTheyNeed) {
     EXPECT_NE(r.err.find("would need"), std::string::npos) << command << "\n" << r.err;
     EXPECT_NE(r.err.find("--max-memory"), std::string::npos) << command << "\n" << r.err;
     EXPECT_NE(r.err.find(hint), std::string::npos) << command << "\n" << r.err;
+    // ... and which input it was about (issue 18, finding 12).
+    const std::string input = command.substr(
+        command.find(' ') + 1, command.find(' ', command.find(' ') + 1) - command.find(' ') - 1);
+    EXPECT_NE(r.err.find(input + ": "), std::string::npos) << command << "\n" << r.err;
     EXPECT_LT(seconds, 30.0) << command;
   }
 }

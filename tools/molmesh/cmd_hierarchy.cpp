@@ -19,6 +19,7 @@
 #include "molmesh/pipeline/hierarchy_surface.hpp"
 #include "molmesh/pipeline/report_json.hpp"
 #include "molmesh/pipeline/surface_pipeline.hpp"
+#include "naming_input.hpp"
 #include "option_checks.hpp"
 #include "spec_option.hpp"
 #include "surface_options.hpp"
@@ -45,7 +46,9 @@ void run(const HierarchyArgs& args, const CliContext& ctx) {
   const Atoms atoms = read_atoms(args.input, args.surface.atoms, reporter);
   const SurfacePipelineOptions& pipeline = args.surface.pipeline;
 
-  const auto surface = surface_from_atoms(atoms, hierarchy_surface_options(pipeline), reporter);
+  const auto surface = naming_input(args.input, [&] {
+    return surface_from_atoms(atoms, hierarchy_surface_options(pipeline), reporter);
+  });
 
   HierarchyOptions options;
   // The shared layer's coarsening thresholds are the levels' (--t0).
@@ -57,7 +60,9 @@ void run(const HierarchyArgs& args, const CliContext& ctx) {
   options.renumber = args.renumber;
 
   HierarchyReport report;
-  Hierarchy hierarchy = build_hierarchy(surface.surface, atoms, options, reporter, &report);
+  Hierarchy hierarchy = naming_input(args.input, [&] {
+    return build_hierarchy(surface.surface, atoms, options, reporter, &report);
+  });
   hierarchy.input_name = std::filesystem::path(args.input).filename().string();
   hierarchy.input_checksum = sha256_file(args.input);
   hierarchy.parameters = hierarchy_parameters(options, report, args.volume.active_site,

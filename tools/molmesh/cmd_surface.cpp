@@ -14,6 +14,7 @@
 #include "molmesh/pipeline/parameters_json.hpp"
 #include "molmesh/pipeline/report_json.hpp"
 #include "molmesh/pipeline/surface_pipeline.hpp"
+#include "naming_input.hpp"
 #include "option_checks.hpp"
 #include "surface_options.hpp"
 
@@ -56,8 +57,10 @@ void run(const SurfaceArgs& args, const CliContext& ctx) {
   SurfacePipelineOptions pipeline = args.options.pipeline;
   pipeline.keep_volume = !args.write_volume.empty() && !volume_input;
   pipeline.measure = !args.stats.empty();  // nobody sees the per-stage stats otherwise
-  SurfacePipelineResult result = volume_input ? surface_from_grid(volume, pipeline, reporter)
-                                              : surface_from_atoms(atoms, pipeline, reporter);
+  SurfacePipelineResult result = naming_input(args.input, [&] {
+    return volume_input ? surface_from_grid(volume, pipeline, reporter)
+                        : surface_from_atoms(atoms, pipeline, reporter);
+  });
   if (!args.write_volume.empty()) {
     start = Clock::now();
     write_volume(args.write_volume, volume_input ? volume : result.volume);

@@ -18,6 +18,7 @@
 #include "molmesh/pipeline/surface_pipeline.hpp"
 #include "molmesh/tetmesh/tet_stats.hpp"
 #include "molmesh/tetmesh/tetrahedralize.hpp"
+#include "naming_input.hpp"
 #include "option_checks.hpp"
 #include "surface_options.hpp"
 #include "volume_options.hpp"
@@ -57,7 +58,8 @@ void run(const TetmeshArgs& args, const CliContext& ctx) {
     timings.emplace_back("read", seconds_since(start));
     SurfacePipelineOptions pipeline = args.surface.pipeline;
     pipeline.measure = false;  // the tetmesh --stats report has no per-stage surface stats
-    SurfacePipelineResult result = surface_from_atoms(atoms, pipeline, reporter);
+    SurfacePipelineResult result =
+        naming_input(args.input, [&] { return surface_from_atoms(atoms, pipeline, reporter); });
     for (const StageRecord& stage : result.stages) timings.emplace_back(stage.name, stage.seconds);
     surface = std::move(result.surface);
     input["kind"] = "atoms";
@@ -70,7 +72,8 @@ void run(const TetmeshArgs& args, const CliContext& ctx) {
 
   TetMeshReport report;
   start = Clock::now();
-  const TetMesh mesh = tetrahedralize(surface, atoms, options, reporter, &report);
+  const TetMesh mesh = naming_input(
+      args.input, [&] { return tetrahedralize(surface, atoms, options, reporter, &report); });
   timings.emplace_back("tetrahedralize", seconds_since(start));
 
   start = Clock::now();
