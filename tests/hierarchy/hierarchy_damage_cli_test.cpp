@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <vector>
 
 #include "hierarchy/hierarchy_support.hpp"
 #include "molmesh/core/error.hpp"
@@ -132,14 +133,17 @@ TEST(HierarchyDamage, CorruptBytesAreExitCode3NeverASignal) {
   // hierarchy libhdf5 1.10.8 crashed (SIGSEGV in H5Aiterate2) at 12 offsets between 1200
   // and 1330 (the root object header's attributes) and looped forever at 3040 (refused
   // after the reader's 60 s limit: too slow for this test). Every 16th offset of bytes
-  // 1000-1400 is tried here with both commands that read hierarchies.
+  // 1000-1400 is tried here with both commands that read hierarchies, and the issue's own
+  // offset, 1232.
   const auto dir = testing::test_dir("bytes");
   const fs::path intact = dir / "intact.h5";
   write_hierarchy(intact, small_hierarchy());
   const std::string original = testing::slurp(intact);
   const std::size_t end = std::min<std::size_t>(original.size() - 4, 1400);
+  std::vector<std::size_t> offsets{1232};
+  for (std::size_t offset = 1000; offset < end; offset += 16) offsets.push_back(offset);
   int refused = 0, accepted = 0;
-  for (std::size_t offset = 1000; offset < end; offset += 16) {
+  for (const std::size_t offset : offsets) {
     std::string bytes = original;
     bytes.replace(offset, 4, std::string("\x07\x00\x00\x00", 4));
     if (bytes == original) continue;
