@@ -18,6 +18,7 @@
 #include <sstream>
 #include <string>
 #include <thread>
+#include <vector>
 
 #include "molmesh/core/atomic_file.hpp"
 #include "molmesh/core/error.hpp"
@@ -93,6 +94,36 @@ TEST(OutputPaths, FileSizeLimitIsExitCode4AndLeavesNothing) {
     EXPECT_EQ(entries(dir), 0u) << command;
   }
   fs::remove_all(dir);
+}
+
+TEST(OutputPaths, FileSizeLimitIsExitCode4ForEveryMeshFormatExportAndImprove) {
+  // The writers the test above does not reach: each volume mesh format of tetmesh, export of
+  // a hierarchy and improve of a surface, from a two-atom molecule (fast). With writes beyond
+  // 4 KiB failing, each ends with exit code 4 naming the file, and leaves nothing.
+  const auto inputs = testing::test_dir("fsize_inputs");
+  testing::write_file(inputs / "ion.pqr",
+                      "ATOM      1  C   ALA     1       0.000   0.000   0.000  0.00 4.00\n"
+                      "ATOM      2  C   ALA     1       3.000   0.000   0.000  0.00 3.00\n");
+  const std::string ion = (inputs / "ion.pqr").string(), off = (inputs / "ion.off").string(),
+                    h5 = (inputs / "h.h5").string();
+  ASSERT_EQ(testing::run_cli("-q surface " + ion + " -o " + off).exit_code, 0);
+  ASSERT_EQ(testing::run_cli("-q hierarchy " + ion + " --t0 0.2 -o " + h5).exit_code, 0);
+  const auto dir = testing::test_dir("fsize_formats");
+  std::vector<std::string> commands;
+  for (const char* name : {"t.m", "t.vtu", "t.msh", "t.msh4"})
+    commands.push_back("tetmesh " + off + " --domain interior -o " + (dir / name).string());
+  commands.push_back("export " + h5 + " -o " + (dir / "e").string());
+  commands.push_back("improve " + off + " -o " + (dir / "i.off").string());
+  for (const std::string& command : commands) {
+    const auto r = testing::run_cli_after("ulimit -f 4;", "-q " + command);
+    EXPECT_EQ(r.signal, 0) << command << ": " << r.err;
+    EXPECT_EQ(r.exit_code, 4) << command << ": " << r.err;
+    EXPECT_NE(r.err.find("write failed for " + dir.string()), std::string::npos)
+        << command << ": " << r.err;
+    EXPECT_EQ(entries(dir), 0u) << command;
+  }
+  fs::remove_all(dir);
+  fs::remove_all(inputs);
 }
 
 TEST(OutputPaths, FullDiskIsExitCode4ForHierarchyAndSolve) {
