@@ -6,7 +6,9 @@
 // The grid is chosen to fit ~3 minutes on 2 cores: the full 4 x 3 grid on 1a1p (small:
 // seconds per run), the extreme and middle values on fas2, and the two extreme blobbyness
 // values at the coarsest spacing on mAChE (each mAChE run costs ~20 s). `hierarchy` runs
-// the corners of the grid on 1a1p and the fas2 case that crashed.
+// the corners of the grid on 1a1p and the fas2 case that crashed. The whole grid (every
+// molecule file, domain and command) is tests/tetmesh/tetgen_full_sweep.sh, run by hand
+// (docs/testing.md, "TetGen sweep").
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -50,6 +52,23 @@ TEST(TetgenSweep, TetmeshNeverDiesOfASignal) {
         expect_clean_end("tetmesh " + std::string(MOLMESH_TEST_DATA_DIR) + "/" + c.molecule +
                          ".pqr --blobbyness " + std::to_string(b) + " --spacing " +
                          std::to_string(h) + " --domain full -o " + (dir / "m.m").string());
+  fs::remove_all(dir);
+}
+
+// Finding 2 named every domain: the fas2 case that crashed, at the default spacing, on the
+// interior and exterior domains too (the full one is CliTetmesh.Fas2AtBlobbyness2IsNoCrash).
+TEST(TetgenSweep, Fas2AtBlobbyness2MeshesInteriorAndExterior) {
+  const auto dir = fs::temp_directory_path() / ("molmesh_sweep_d_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  for (const char* domain : {"interior", "exterior"}) {
+    const std::string command = "-q tetmesh " + std::string(MOLMESH_TEST_DATA_DIR) +
+                                "/fas2.pqr --blobbyness -2 --domain " + domain + " -o " +
+                                (dir / "m.m").string();
+    const auto r = testing::run_cli(command);
+    EXPECT_EQ(r.signal, 0) << command << "\n" << r.err;
+    EXPECT_EQ(r.exit_code, 0) << command << "\n" << r.err;
+    EXPECT_GT(fs::file_size(dir / "m.m"), 100000u) << command;
+  }
   fs::remove_all(dir);
 }
 
