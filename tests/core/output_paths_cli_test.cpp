@@ -126,7 +126,7 @@ TEST(OutputPaths, FileSizeLimitIsExitCode4ForEveryMeshFormatExportAndImprove) {
   fs::remove_all(inputs);
 }
 
-TEST(OutputPaths, FullDiskIsExitCode4ForHierarchyAndSolve) {
+TEST(OutputPaths, FullDiskIsExitCode4ForHierarchyItsXdmfAndSolve) {
   const auto dir = testing::test_dir("tmpfs");
   // A small tmpfs (needs root and a kernel that allows it; skipped otherwise).
   if (::mount("tmpfs", dir.c_str(), "tmpfs", 0, "size=64k") != 0)
@@ -137,6 +137,24 @@ TEST(OutputPaths, FullDiskIsExitCode4ForHierarchyAndSolve) {
   EXPECT_EQ(r.exit_code, 4) << r.err;
   EXPECT_EQ(entries(dir), 0u);
   ::umount(dir.c_str());
+
+  // The XDMF sidecars, written after the hierarchy: room for h.h5 alone (in whole pages).
+  // h.h5 is complete and kept, the first sidecar fails with exit code 4 and leaves nothing.
+  const auto whole = testing::test_dir("xdmfhome");
+  const std::string hierarchy = "-q hierarchy " + k1a1p + " --t0 0.2 --domain interior -o ";
+  ASSERT_EQ(testing::run_cli(hierarchy + (whole / "h.h5").string()).exit_code, 0);
+  const auto pages = (fs::file_size(whole / "h.h5") + 4095) / 4096;
+  ASSERT_EQ(
+      ::mount("tmpfs", dir.c_str(), "tmpfs", 0, ("size=" + std::to_string(pages * 4096)).c_str()),
+      0);
+  const auto x = testing::run_cli(hierarchy + (dir / "h.h5").string());
+  EXPECT_EQ(x.signal, 0) << x.err;
+  EXPECT_EQ(x.exit_code, 4) << x.err;
+  EXPECT_NE(x.err.find(".xdmf"), std::string::npos) << x.err;
+  EXPECT_EQ(entries(dir), 1u);
+  EXPECT_EQ(testing::slurp(dir / "h.h5"), testing::slurp(whole / "h.h5"));
+  ::umount(dir.c_str());
+  fs::remove_all(whole);
 
   // solve: the hierarchy fits, its copy with the new fields does not.
   const auto home = testing::test_dir("solvehome");
