@@ -6,6 +6,7 @@
 #include <deque>
 #include <memory>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "molmesh/core/error.hpp"
@@ -72,24 +73,42 @@ Layout split(Eigen::Index global) {
 // The rows of `m` this rank owns (rows.first .. +rows.local) as a distributed AIJ matrix,
 // columns laid out as `cols` (local column size = the owned part of the column space).
 Mat distributed(const SparseMatrix& m, const Layout& rows, const Layout& cols) {
+  // Where PetscInt is int and PetscScalar double (Debian's petsc-dev), the column and value
+  // arrays of the owned rows are handed to PETSc as they are, which copies them once; only
+  // the row starts are shifted to begin at zero. Gathering them first into growing vectors
+  // took half of PCMG's setup on mAChE (fresh pages; docs/benchmarks.md, session 24).
+  constexpr bool kSameTypes = std::is_same_v<PetscInt, int> && std::is_same_v<PetscScalar, double>;
   std::vector<PetscInt> indptr(static_cast<std::size_t>(rows.local) + 1, 0);
-  std::vector<PetscInt> indices;
-  std::vector<PetscScalar> values;
-  for (PetscInt r = 0; r < rows.local; ++r) {
-    for (SparseMatrix::InnerIterator it(m, rows.first + r); it; ++it) {
-      indices.push_back(static_cast<PetscInt>(it.col()));
-      values.push_back(it.value());
+  std::vector<PetscInt> index_copy;
+  std::vector<PetscScalar> value_copy;
+  const PetscInt* indices = nullptr;
+  const PetscScalar* values = nullptr;
+  if (kSameTypes && m.isCompressed()) {
+    const int* outer = m.outerIndexPtr();
+    const int begin = outer[rows.first];
+    for (PetscInt r = 0; r <= rows.local; ++r)
+      indptr[static_cast<std::size_t>(r)] = static_cast<PetscInt>(outer[rows.first + r] - begin);
+    indices = reinterpret_cast<const PetscInt*>(m.innerIndexPtr() + begin);
+    values = reinterpret_cast<const PetscScalar*>(m.valuePtr() + begin);
+  } else {
+    for (PetscInt r = 0; r < rows.local; ++r) {
+      for (SparseMatrix::InnerIterator it(m, rows.first + r); it; ++it) {
+        index_copy.push_back(static_cast<PetscInt>(it.col()));
+        value_copy.push_back(it.value());
+      }
+      indptr[static_cast<std::size_t>(r) + 1] = static_cast<PetscInt>(index_copy.size());
     }
-    indptr[static_cast<std::size_t>(r) + 1] = static_cast<PetscInt>(indices.size());
+    indices = index_copy.data();
+    values = value_copy.data();
   }
   Mat a = nullptr;
   check(MatCreate(PETSC_COMM_WORLD, &a), "MatCreate");
   check(MatSetSizes(a, rows.local, cols.local, rows.global, cols.global), "MatSetSizes");
   check(MatSetType(a, MATAIJ), "MatSetType");
   // Exact preallocation and values in one call (sequential or MPI, whichever `a` is).
-  check(MatSeqAIJSetPreallocationCSR(a, indptr.data(), indices.data(), values.data()),
+  check(MatSeqAIJSetPreallocationCSR(a, indptr.data(), indices, values),
         "MatSeqAIJSetPreallocationCSR");
-  check(MatMPIAIJSetPreallocationCSR(a, indptr.data(), indices.data(), values.data()),
+  check(MatMPIAIJSetPreallocationCSR(a, indptr.data(), indices, values),
         "MatMPIAIJSetPreallocationCSR");
   return a;
 }
