@@ -63,7 +63,10 @@ sanitizer_env() {
 
 sanitizer_configure() {
   local dir="$1"
-  local flags="-O1 -g -fno-omit-frame-pointer -fsanitize=address,undefined"
+  # -gline-tables-only: the reports' stacks keep function, file and line (inlined frames
+  # too) at a quarter of -g's object size and ~10 % less compile time (session 26); rebuild
+  # with -g to step through a finding in gdb.
+  local flags="-O1 -gline-tables-only -fno-omit-frame-pointer -fsanitize=address,undefined"
   flags+=" -fno-sanitize-recover=undefined -D_GLIBCXX_ASSERTIONS"
   cmake -S "$here" -B "$dir" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
     -DCMAKE_C_COMPILER=clang-14 -DCMAKE_CXX_COMPILER=clang++-14 \
