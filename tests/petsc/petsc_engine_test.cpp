@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <string>
 
@@ -42,27 +43,29 @@ class PetscEngine : public ::testing::Test {
   static int cli(const std::string& args) {
     return testing::run_command(molmesh_cli() + args).exit_code;
   }
-  // Each test process builds only the hierarchy it uses, once. Five sphere levels, so 2..5
-  // of them can be used.
+  // NAME.h5, the hierarchy of one ion (a PQR line) built with `options`: each test process
+  // builds only the one it uses, once; "" (and a failure) if the CLI failed.
+  static std::string hierarchy_h5(const std::string& name, const std::string& ion,
+                                  const std::string& options) {
+    static std::map<std::string, int> status;
+    if (!status.contains(name)) {
+      testing::write_file(dir_ / (name + ".pqr"), ion + "\n");
+      status[name] =
+          cli("hierarchy " + path(name + ".pqr") + " -o " + path(name + ".h5") + " " + options);
+    }
+    EXPECT_EQ(status[name], 0) << name;
+    return status[name] == 0 ? path(name + ".h5") : "";
+  }
+  // Five levels, so 2..5 of them can be used.
   static std::string sphere_h5() {
-    static const int status = [] {
-      testing::write_file(dir_ / "sphere.pqr",
-                          "ATOM      1  NA  ION     1       0.000   0.000   0.000  1.0000 10.0\n");
-      return cli("hierarchy " + path("sphere.pqr") + " -o " + path("sphere.h5") +
-                 " --domain exterior --outer-radius 50 --t0 0.1,0.3,0.5,0.7,0.9");
-    }();
-    EXPECT_EQ(status, 0);
-    return status == 0 ? path("sphere.h5") : "";
+    return hierarchy_h5("sphere",
+                        "ATOM      1  NA  ION     1       0.000   0.000   0.000  1.0000 10.0",
+                        "--domain exterior --outer-radius 50 --t0 0.1,0.3,0.5,0.7,0.9");
   }
   static std::string born_h5() {
-    static const int status = [] {
-      testing::write_file(dir_ / "born.pqr",
-                          "ATOM      1  I   ION     1       0.000   0.000   0.000  1.00  3.00\n");
-      return cli("hierarchy " + path("born.pqr") + " -o " + path("born.h5") +
-                 " --domain full --outer-radius 20");
-    }();
-    EXPECT_EQ(status, 0);
-    return status == 0 ? path("born.h5") : "";
+    return hierarchy_h5("born",
+                        "ATOM      1  I   ION     1       0.000   0.000   0.000  1.00  3.00",
+                        "--domain full --outer-radius 20");
   }
   // Runs `command` writing JSON to `name`; returns the parsed JSON (empty on failure).
   static nlohmann::json run_json(const std::string& command, const std::string& name) {
