@@ -112,4 +112,28 @@ TEST(SurfaceCli, ExitCodes) {
   EXPECT_FALSE(fs::exists(dir.path / "x.off"));
 }
 
+// A processed surface whose angles processing could not bring into a usable range is still
+// written, but with a warning that says so and what to change; a good one gets none.
+TEST(SurfaceCli, WarnsWhenTheProcessedSurfaceHasDegenerateAngles) {
+  TempDir dir;
+  const std::string fas2 = std::string(MOLMESH_TEST_DATA_DIR) + "/fas2.pqr";
+  const fs::path json = dir.path / "poor.json";
+  // B = -4 on a 1 A grid: features finer than the grid (0.21 to 171.5 degrees).
+  const auto poor =
+      molmesh::testing::run_cli("-q surface " + fas2 + " --blobbyness -4 --spacing 1.0 -o " +
+                                (dir.path / "poor.off").string() + " --stats " + json.string());
+  ASSERT_EQ(poor.exit_code, 0) << poor.err;
+  EXPECT_NE(poor.err.find("warning: the processed surface has angles from"), std::string::npos)
+      << poor.err;
+  EXPECT_NE(poor.err.find("finer grid spacing"), std::string::npos) << poor.err;
+  std::ifstream in(json);
+  const nlohmann::json doc = nlohmann::json::parse(in);
+  EXPECT_LT(doc["min_angle_deg"].get<double>(), 5.0);
+
+  const auto good = molmesh::testing::run_cli("-q surface " + fas2 + " --spacing 1.0 -o " +
+                                              (dir.path / "good.off").string());
+  ASSERT_EQ(good.exit_code, 0) << good.err;
+  EXPECT_EQ(good.err.find("warning"), std::string::npos) << good.err;
+}
+
 }  // namespace

@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <memory>
 #include <string>
 #include <utility>
@@ -12,6 +13,7 @@
 #include "molmesh/pipeline/surface_option_specs.hpp"
 #include "molmesh/surface/components.hpp"
 #include "molmesh/surface/marching_cubes.hpp"
+#include "molmesh/surface/surface_stats.hpp"
 #include "molmesh/volume/ball_union.hpp"
 #include "molmesh/volume/gaussian_field.hpp"
 #include "molmesh/volume/level_set_projection.hpp"
@@ -32,6 +34,26 @@ constexpr double kLocalFrameDistance = 1e3;
 // this many Å, until a step is shorter than the tolerance (Å).
 constexpr double kLevelSetMaxStep = 0.5;
 constexpr double kLevelSetTolerance = 1e-4;
+
+// A processed surface with an angle outside these bounds (degrees) is not one processing
+// could improve: features finer than the grid (tight Gaussians, van der Waals creases) or
+// tiny marching-cubes fragments. It is still returned, with a warning, because whether it
+// is usable is the caller's call; TetGen often refuses such surfaces later.
+constexpr double kPoorMinAngle = 5.0;
+constexpr double kPoorMaxAngle = 160.0;
+
+void warn_about_poor_angles(const SurfaceMesh& mesh, double spacing, const Reporter& reporter) {
+  const SurfaceStats stats = compute_surface_stats(mesh);
+  if (stats.min_angle_deg >= kPoorMinAngle && stats.max_angle_deg <= kPoorMaxAngle) return;
+  char line[320];
+  std::snprintf(line, sizeof line,
+                "the processed surface has angles from %.2f to %.1f degrees (%d components): "
+                "features finer than the %.3g A grid; expect TetGen to refuse it or a poor "
+                "solve. A finer grid spacing or a smoother surface (a Gaussian with "
+                "blobbyness closer to 0, or the SES) gives a usable mesh",
+                stats.min_angle_deg, stats.max_angle_deg, stats.components, spacing);
+  reporter.warn(line);
+}
 
 Vec3 frame_centre(const Atoms& atoms, double spacing) {
   Vec3 sum = Vec3::Zero();
@@ -104,6 +126,7 @@ void extract_and_process(const Grid& grid, double level, const SurfacePipelineOp
     result.stages.push_back({"dislocation", seconds_since(start), std::nullopt});
   }
   result.surface = std::move(processed.mesh);
+  warn_about_poor_angles(result.surface, grid.spacing.maxCoeff(), reporter);
 }
 
 // Eq. 1 as the blur evaluates it, exactly: with the fast blur's one decay rate, the Eq. 1 that
