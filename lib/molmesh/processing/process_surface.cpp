@@ -10,6 +10,7 @@
 #include "molmesh/processing/edge_flips.hpp"
 #include "molmesh/processing/halfedge_mesh.hpp"
 #include "molmesh/processing/low_valence_removal.hpp"
+#include "molmesh/processing/poor_triangle_collapse.hpp"
 #include "molmesh/processing/processing_option_specs.hpp"
 #include "molmesh/processing/project_vertices.hpp"
 #include "molmesh/processing/untangle.hpp"
@@ -183,6 +184,22 @@ ProcessingResult process_centred(const SurfaceMesh& input, const ProcessingOptio
   for (int round = 0; round < options.cleanup_rounds; ++round) {
     improve_and_flip(" cleanup " + std::to_string(round + 1), improve.sweeps,
                      options.cleanup_worklist);
+  }
+  // What the cleanup left outside the floors, mostly tiny triangles on creases, is collapsed
+  // last, so the edit stays local: a mesh inside the floors is not touched (and only with
+  // coarsening: without it every input vertex is kept).
+  PoorTriangleCollapseOptions poor;
+  poor.keep_spheres = options.keep_spheres;
+  poor.project = options.project;
+  if (options.collapse_poor_triangles && !options.t0.empty() &&
+      has_poor_triangle(result.mesh, poor)) {
+    timer.run("collapse", [&] {
+      HalfedgeMesh editable(result.mesh);
+      // A collapse can leave a neighbour poor that the pass had already visited.
+      for (int pass = 0; pass < 3 && collapse_poor_triangles(editable, poor) > 0; ++pass) {
+      }
+      take_edited(result, editable);
+    });
   }
   // The steps above can, rarely, push one sheet through a close neighbour (issue 18:
   // TetGen refused fas2 at B = -2); undo that locally.

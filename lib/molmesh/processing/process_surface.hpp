@@ -41,6 +41,11 @@ struct ProcessingOptions {
   // [40°, 80°] from 90.8–92.6 % to 95.2–96.5 % (docs/processing.md).
   bool remove_low_valence = true;
   double valence_stage_flip_min_angle_deg = 15.0;
+  // After the cleanup rounds, collapse the short edges of the triangles still outside the
+  // quality floors (below 27° or above 115°), which flips and relocation cannot repair,
+  // such as tiny triangles on creases (processing/poor_triangle_collapse.hpp). A mesh inside
+  // the floors is unchanged. Only with coarsening.
+  bool collapse_poor_triangles = true;
   // Final passes of improvement + flips aimed at the worst triangles (see docs/processing.md).
   // Five: with the valence removal the minimum angle still rises in the fourth and fifth
   // (the worst of eleven proteins 29.99° after four, 30.49° after five).
