@@ -88,5 +88,23 @@ TEST(TetgenSweep, HierarchyNeverDiesOfASignal) {
   fs::remove_all(dir);
 }
 
+// The sweep's one hierarchy refusal that was a processing defect (session 27): mAChE at
+// B = -2 on a 0.6 Å grid, whose level 1 (T0 = 0.4) crossed itself in 7 triangle pairs, so
+// every domain exited 1. The last poor triangles' collapse (processing/poor_triangle_collapse)
+// removes the crossing; the surface is the same for every domain, so the cheapest one runs.
+TEST(TetgenSweep, MacheAtBlobbyness2OnA06Grid_HierarchyMeshesEveryLevel) {
+  const auto dir = fs::temp_directory_path() / ("molmesh_sweep_m_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  const std::string command = "-q hierarchy " + std::string(MOLMESH_TEST_DATA_DIR) +
+                              "/mache.pqr --blobbyness -2 --spacing 0.6 --domain interior "
+                              "--t0 0.2,0.4 -o " +
+                              (dir / "h.h5").string();
+  const auto r = testing::run_cli(command);
+  EXPECT_EQ(r.signal, 0) << command << "\n" << r.err;
+  EXPECT_EQ(r.exit_code, 0) << command << "\n" << r.err;
+  EXPECT_TRUE(fs::exists(dir / "h.h5")) << command;
+  fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace molmesh
