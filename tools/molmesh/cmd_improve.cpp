@@ -17,6 +17,7 @@
 #include "molmesh/pipeline/improve_option_specs.hpp"
 #include "molmesh/pipeline/improve_pipeline.hpp"
 #include "molmesh/pipeline/parameters_json.hpp"
+#include "molmesh/pipeline/report_json.hpp"
 #include "molmesh/processing/dislocation.hpp"
 #include "molmesh/processing/mesh_repair.hpp"
 #include "molmesh/processing/process_surface.hpp"
@@ -97,7 +98,7 @@ void run(const ImproveArgs& args, const CliContext& ctx) {
     in["repair"] = to_json(report);
     in["output"] = args.output;
     nlohmann::json doc = stats_document(stats, timings, in, improve_parameters_json(options));
-    doc["dislocation"] = {{"max", d.max}, {"mean", d.mean}};
+    add_dislocation(doc, d);
     write_json_file(args.stats, doc);
   }
 }

@@ -21,10 +21,14 @@ nlohmann::json to_json(const std::vector<StageRecord>& stages) {
   return out;
 }
 
+void add_dislocation(nlohmann::json& j, const Dislocation& dislocation) {
+  j["dislocation_max"] = dislocation.max;
+  j["dislocation_mean"] = dislocation.mean;
+}
+
 nlohmann::json surface_result_json(const SurfacePipelineResult& result) {
   nlohmann::json j;
-  j["dislocation_max"] = result.dislocation.max;
-  j["dislocation_mean"] = result.dislocation.mean;
+  add_dislocation(j, result.dislocation);
   if (result.level_set_distance) {
     const LevelSetDistance& d = *result.level_set_distance;
     j["levelset_distance_mean"] = d.vertex_mean;
