@@ -46,11 +46,12 @@ struct Collapse {
 class Planner {
  public:
   Planner(const HalfedgeMesh& mesh, const std::vector<int>& valence,
-          const PoorTriangleCollapseOptions& options)
+          const PoorTriangleCollapseOptions& options, double mesh_edge)
       : mesh_(mesh),
         valence_(valence),
         options_(options),
-        cos_turn_(std::cos(radians(options.max_normal_turn_deg))) {}
+        cos_turn_(std::cos(radians(options.max_normal_turn_deg))),
+        mesh_edge_(mesh_edge) {}
 
   // Fills `out` and returns true if collapsing u into v passes every test and raises the
   // quality of u's star by at least min_gain_deg.
@@ -75,6 +76,9 @@ class Planner {
     for (int r : ring_) mean_edge += (mesh_.position(r) - pu).norm();
     mean_edge /= m;
     if ((pv - pu).norm() > options_.max_edge_ratio * mean_edge) return false;
+    // A tiny star (a sliver's) has a tiny mean edge; the surface may still move by the
+    // mesh's own scale, as much as anywhere else.
+    const double height_limit = options_.max_height_ratio * std::max(mean_edge, mesh_edge_);
 
     double old_quality = std::numeric_limits<double>::infinity();
     for (int f : faces_) {
@@ -94,7 +98,7 @@ class Planner {
       // The face it replaces is (u, a, b), face (k + j) of u's star.
       const Vec3 old_n = mesh_.face_area_vector(faces_[static_cast<std::size_t>((k + j) % m)]);
       if (!(length > 0) || n.dot(old_n) < cos_turn_ * length * old_n.norm()) return false;
-      if (std::abs(n.dot(pu - pv)) / length > options_.max_height_ratio * mean_edge) return false;
+      if (std::abs(n.dot(pu - pv)) / length > height_limit) return false;
       new_quality = std::min(new_quality, quality(angle_range(pv, pa, pb)));
       fan_.push_back({v, a, b});
     }
@@ -120,6 +124,7 @@ class Planner {
   const std::vector<int>& valence_;
   const PoorTriangleCollapseOptions& options_;
   double cos_turn_;
+  double mesh_edge_;  // mean edge length of the whole mesh
   std::vector<int> ring_, faces_;
   std::vector<Triangle> fan_;
 };
@@ -139,7 +144,19 @@ std::size_t collapse_poor_triangles(HalfedgeMesh& mesh,
   std::vector<int> valence(static_cast<std::size_t>(mesh.vertex_capacity()), 0);
   for (int v = 0; v < mesh.vertex_capacity(); ++v)
     if (mesh.vertex_alive(v)) valence[v] = mesh.valence(v);
-  Planner planner(mesh, valence, options);
+  // Mean edge length of the mesh (each edge once: the halfedge from the smaller vertex).
+  double edge_sum = 0.0;
+  long edges = 0;
+  for (int f = 0; f < mesh.face_capacity(); ++f) {
+    if (!mesh.face_alive(f)) continue;
+    const Triangle t = mesh.face_vertices(f);
+    for (int i = 0; i < 3; ++i) {
+      if (t[i] > t[(i + 1) % 3]) continue;
+      edge_sum += (mesh.position(t[i]) - mesh.position(t[(i + 1) % 3])).norm();
+      ++edges;
+    }
+  }
+  Planner planner(mesh, valence, options, edges > 0 ? edge_sum / static_cast<double>(edges) : 0.0);
   std::size_t collapsed = 0;
   for (int f = 0; f < mesh.face_capacity(); ++f) {
     // A tetrahedron is the smallest closed mesh; nothing may collapse below it.

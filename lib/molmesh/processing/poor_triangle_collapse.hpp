@@ -25,10 +25,11 @@ struct PoorTriangleCollapseOptions {
   // vertex that goes: no long edges (the height test below is what bounds the change of
   // shape; mAChE's 122° SES triangle collapses an edge of 0.78 times its star's mean).
   double max_edge_ratio = 1.0;
-  // The vertex that goes may lie at most this fraction of that mean edge length away from
-  // the plane of any triangle of the new fan (it keeps creases: a vertex at a crease's bend
-  // is not straightened away). 0.15 rather than the valence removal's 0.1: mAChE's 122°
-  // SES triangle needs 0.107 (its crease bends by a few degrees at the vertex that goes).
+  // The vertex that goes may lie at most this fraction of that mean edge length, or of the
+  // whole mesh's mean edge length if that is larger (a sliver's star is tiny), away from the
+  // plane of any triangle of the new fan (it keeps creases: a vertex at a crease's bend is
+  // not straightened away). 0.15 rather than the valence removal's 0.1: mAChE's 122° SES
+  // triangle needs 0.107 (its crease bends by a few degrees at the vertex that goes).
   double max_height_ratio = 0.15;
   // Every new triangle's normal within this angle of the normal of the triangle it replaces
   // (no fold, no new ridge).
