@@ -9,6 +9,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <span>
 #include <string>
 
 #include "molmesh/core/error.hpp"
@@ -305,10 +306,7 @@ bool plan_removal(const HalfedgeMesh& mesh, int v, Scratch& s, std::vector<Trian
   return filling_fits(mesh, s, out);
 }
 
-}  // namespace
-
-CoarsenResult coarsen(const SurfaceMesh& input, const CoarsenOptions& options,
-                      const Reporter& reporter) {
+void check_options(const CoarsenOptions& options) {
   if (!std::isfinite(options.t0) || !std::isfinite(options.alpha) || !std::isfinite(options.beta)) {
     throw Error("coarsening: t0, alpha and beta must be finite numbers");
   }
@@ -321,52 +319,205 @@ CoarsenResult coarsen(const SurfaceMesh& input, const CoarsenOptions& options,
       throw Error("coarsening: keep-sphere radii must be >= 0 and centres finite");
     }
   }
+}
 
-  HalfedgeMesh mesh(input);
+// Step 1: 1 for every vertex inside a keep sphere (never deleted, never flipped around).
+std::vector<std::uint8_t> lock_kept_vertices(const HalfedgeMesh& mesh,
+                                             std::span<const Sphere> keep_spheres) {
   const int n = mesh.vertex_capacity();
-  const int initial_vertices = mesh.vertex_count();
-
   std::vector<std::uint8_t> locked(static_cast<std::size_t>(n), 0);
-  if (!options.keep_spheres.empty()) {
+  if (!keep_spheres.empty()) {
     tbb::parallel_for(0, n, [&](int v) {
-      for (const Sphere& sphere : options.keep_spheres) {
+      for (const Sphere& sphere : keep_spheres) {
         if (sphere.contains(mesh.position(v))) locked[v] = 1;
       }
     });
   }
+  return locked;
+}
 
-  // Connected components, so that none is reduced below a tetrahedron.
-  std::vector<int> component(static_cast<std::size_t>(n), -1);
-  std::vector<int> component_size;
-  {
-    std::vector<int> stack;
-    for (int v = 0; v < n; ++v) {
-      if (!mesh.vertex_alive(v) || component[v] >= 0) continue;
-      const int id = static_cast<int>(component_size.size());
-      component_size.push_back(0);
-      component[v] = id;
-      stack.push_back(v);
-      while (!stack.empty()) {
-        const int u = stack.back();
-        stack.pop_back();
-        ++component_size[id];
-        const int h0 = mesh.outgoing(u);
-        int h = h0;
-        do {
-          const int w = mesh.head(h);
-          if (component[w] < 0) {
-            component[w] = id;
-            stack.push_back(w);
-          }
-          h = mesh.rotate_ccw(h);
-        } while (h != h0);
-      }
+// Step 2: connected components, so that none is reduced below a tetrahedron.
+struct Components {
+  std::vector<int> of_vertex;  // component id per vertex, -1 for dead vertices
+  std::vector<int> size;       // live vertices per component
+};
+
+Components connected_components(const HalfedgeMesh& mesh) {
+  const int n = mesh.vertex_capacity();
+  Components c;
+  c.of_vertex.assign(static_cast<std::size_t>(n), -1);
+  std::vector<int> stack;
+  for (int v = 0; v < n; ++v) {
+    if (!mesh.vertex_alive(v) || c.of_vertex[v] >= 0) continue;
+    const int id = static_cast<int>(c.size.size());
+    c.size.push_back(0);
+    c.of_vertex[v] = id;
+    stack.push_back(v);
+    while (!stack.empty()) {
+      const int u = stack.back();
+      stack.pop_back();
+      ++c.size[id];
+      const int h0 = mesh.outgoing(u);
+      int h = h0;
+      do {
+        const int w = mesh.head(h);
+        if (c.of_vertex[w] < 0) {
+          c.of_vertex[w] = id;
+          stack.push_back(w);
+        }
+        h = mesh.rotate_ccw(h);
+      } while (h != h0);
     }
   }
+  return c;
+}
+
+// Step 3 of a pass: the live vertices of `changed` and every vertex within `rings` edges of
+// them, each once (stamp[v] == pass marks the ones taken).
+void collect_dirty(const HalfedgeMesh& mesh, const std::vector<int>& changed, int rings, int pass,
+                   std::vector<int>& stamp, std::vector<int>& dirty) {
+  dirty.clear();
+  for (int v : changed) {
+    if (mesh.vertex_alive(v) && stamp[v] != pass) {
+      stamp[v] = pass;
+      dirty.push_back(v);
+    }
+  }
+  std::size_t begin = 0;
+  for (int r = 0; r < rings; ++r) {
+    const std::size_t end = dirty.size();
+    for (std::size_t i = begin; i < end; ++i) {
+      const int u = dirty[i];
+      const int h0 = mesh.outgoing(u);
+      int h = h0;
+      do {
+        const int w = mesh.head(h);
+        if (stamp[w] != pass) {
+          stamp[w] = pass;
+          dirty.push_back(w);
+        }
+        h = mesh.rotate_ccw(h);
+      } while (h != h0);
+    }
+    begin = end;
+  }
+}
+
+// Step 4: Eq. 6 at every dirty vertex, in parallel; infinity where the vertex is locked or
+// its structure tensor is degenerate.
+void evaluate_eq6(const HalfedgeMesh& mesh, const std::vector<int>& dirty,
+                  const std::vector<Vec3>& normals, const std::vector<std::uint8_t>& locked,
+                  const CoarsenOptions& options, tbb::enumerable_thread_specific<Scratch>& scratch,
+                  std::vector<double>& value) {
+  const bool plain_exponents = options.alpha == 1.0 && options.beta == 1.0;
+  tbb::parallel_for(std::size_t{0}, dirty.size(), [&](std::size_t i) {
+    const int v = dirty[i];
+    value[v] = kInf;
+    if (locked[v]) return;
+    Scratch& s = scratch.local();
+    const Vec3& x = mesh.position(v);
+    double longest = 0;
+    const int h0 = mesh.outgoing(v);
+    int h = h0;
+    do {
+      longest = std::max(longest, (mesh.position(mesh.head(h)) - x).squaredNorm());
+      h = mesh.rotate_ccw(h);
+    } while (h != h0);
+    longest = std::sqrt(longest);
+    mesh.k_ring(v, options.rings, s.rings, s.verts);
+    s.normals.clear();
+    for (int u : s.verts) s.normals.push_back(normals[u]);
+    const StructureTensor tensor = structure_tensor_of_normals(s.normals);
+    if (!(tensor.eigenvalues[0] > 0)) return;
+    const double ratio = tensor.eigenvalues[1] / tensor.eigenvalues[0];
+    value[v] = plain_exponents ? longest * ratio
+                               : std::pow(longest, options.alpha) * std::pow(ratio, options.beta);
+  });
+}
+
+// Step 5: of the candidates (sorted most deletable first), those whose stars no earlier one
+// touches (blocked[v] == pass marks a taken star).
+void select_disjoint_stars(const HalfedgeMesh& mesh, const std::vector<int>& candidates, int pass,
+                           std::vector<int>& blocked, std::vector<int>& selected) {
+  selected.clear();
+  for (int v : candidates) {
+    if (blocked[v] == pass) continue;
+    selected.push_back(v);
+    blocked[v] = pass;
+    const int h0 = mesh.outgoing(v);
+    int h = h0;
+    do {
+      blocked[mesh.head(h)] = pass;
+      h = mesh.rotate_ccw(h);
+    } while (h != h0);
+  }
+}
+
+// Step 6: colour the selection so that two vertices of one colour share no ring vertex:
+// their holes, the faces around the holes, and the edges a filling may create are then
+// disjoint, so a colour class is planned in parallel on the current mesh and applied in
+// priority order with exactly the outcome of a sequential run, whatever the thread count.
+void colour_selection(const HalfedgeMesh& mesh, const std::vector<int>& selected,
+                      std::vector<std::uint64_t>& color_mask,
+                      std::vector<std::vector<int>>& classes, std::vector<int>& ring) {
+  color_mask.assign(static_cast<std::size_t>(mesh.vertex_capacity()), 0);
+  for (auto& members : classes) members.clear();
+  for (int v : selected) {
+    mesh.one_ring(v, ring);
+    std::uint64_t used = 0;
+    for (int r : ring) used |= color_mask[r];
+    if (~used == 0) continue;  // 64 colours taken around v: leave it to the next pass
+    const int color = std::countr_zero(~used);
+    for (int r : ring) color_mask[r] |= std::uint64_t{1} << color;
+    if (static_cast<int>(classes.size()) <= color) classes.resize(color + 1);
+    classes[color].push_back(v);
+  }
+}
+
+// Step 7: plan the removals of one colour class in parallel, then apply them in order.
+// Returns how many were removed; their fillings' vertices go to `changed`.
+std::size_t remove_class(HalfedgeMesh& mesh, const std::vector<int>& members,
+                         Components& components, tbb::enumerable_thread_specific<Scratch>& scratch,
+                         std::vector<std::vector<Triangle>>& plans,
+                         std::vector<std::uint8_t>& planned, std::vector<double>& value,
+                         std::vector<int>& changed) {
+  plans.resize(std::max(plans.size(), members.size()));
+  planned.assign(members.size(), 0);
+  tbb::parallel_for(std::size_t{0}, members.size(), [&](std::size_t i) {
+    planned[i] = plan_removal(mesh, members[i], scratch.local(), plans[i]) ? 1 : 0;
+  });
+  std::size_t removed = 0;
+  for (std::size_t i = 0; i < members.size(); ++i) {
+    const int v = members[i];
+    int& component_size = components.size[components.of_vertex[v]];
+    if (!planned[i] || component_size <= 4) continue;
+    try {
+      mesh.remove_vertex(v, plans[i]);
+    } catch (const Error&) {
+      continue;  // the gateway refused (cannot happen for a valid plan): keep v
+    }
+    value[v] = kInf;
+    for (const Triangle& t : plans[i]) changed.insert(changed.end(), t.begin(), t.end());
+    --component_size;
+    ++removed;
+  }
+  return removed;
+}
+
+}  // namespace
+
+CoarsenResult coarsen(const SurfaceMesh& input, const CoarsenOptions& options,
+                      const Reporter& reporter) {
+  check_options(options);
+  HalfedgeMesh mesh(input);
+  const int n = mesh.vertex_capacity();
+  const int initial_vertices = mesh.vertex_count();
+  const std::vector<std::uint8_t> locked = lock_kept_vertices(mesh, options.keep_spheres);
+  Components components = connected_components(mesh);
 
   tbb::enumerable_thread_specific<Scratch> scratch;
-  Scratch main_scratch;
-  std::vector<Vec3> normals;
+  std::vector<int> ring;
+  std::vector<Vec3> normals(static_cast<std::size_t>(n), Vec3::Zero());
   std::vector<double> value(static_cast<std::size_t>(n), kInf);
   std::vector<int> candidates, selected, blocked(static_cast<std::size_t>(n), -1);
   std::vector<std::uint64_t> color_mask;
@@ -375,13 +526,11 @@ CoarsenResult coarsen(const SurfaceMesh& input, const CoarsenOptions& options,
   std::vector<std::uint8_t> planned;
 
   CoarsenResult result;
-  const bool plain_exponents = options.alpha == 1.0 && options.beta == 1.0;
   // Only stars around deleted vertices change, so after the first pass the normals are
   // refreshed at the ring vertices of deleted ones (`changed`) and Eq. 6 re-evaluated
   // within `rings` edges of them (`dirty`); elsewhere last pass's value still holds.
   std::vector<int> changed, dirty;
   std::vector<int> stamp(static_cast<std::size_t>(n), -1);
-  normals.assign(static_cast<std::size_t>(n), Vec3::Zero());
   for (int v = 0; v < n; ++v) {
     if (mesh.vertex_alive(v)) changed.push_back(v);
   }
@@ -395,55 +544,9 @@ CoarsenResult coarsen(const SurfaceMesh& input, const CoarsenOptions& options,
     if (pass == 0) {
       dirty = changed;
     } else {
-      dirty.clear();
-      for (int v : changed) {
-        if (mesh.vertex_alive(v) && stamp[v] != pass) {
-          stamp[v] = pass;
-          dirty.push_back(v);
-        }
-      }
-      std::size_t begin = 0;
-      for (int r = 0; r < options.rings; ++r) {
-        const std::size_t end = dirty.size();
-        for (std::size_t i = begin; i < end; ++i) {
-          const int u = dirty[i];
-          const int h0 = mesh.outgoing(u);
-          int h = h0;
-          do {
-            const int w = mesh.head(h);
-            if (stamp[w] != pass) {
-              stamp[w] = pass;
-              dirty.push_back(w);
-            }
-            h = mesh.rotate_ccw(h);
-          } while (h != h0);
-        }
-        begin = end;
-      }
+      collect_dirty(mesh, changed, options.rings, pass, stamp, dirty);
     }
-    tbb::parallel_for(std::size_t{0}, dirty.size(), [&](std::size_t i) {
-      const int v = dirty[i];
-      value[v] = kInf;
-      if (locked[v]) return;
-      Scratch& s = scratch.local();
-      const Vec3& x = mesh.position(v);
-      double longest = 0;
-      const int h0 = mesh.outgoing(v);
-      int h = h0;
-      do {
-        longest = std::max(longest, (mesh.position(mesh.head(h)) - x).squaredNorm());
-        h = mesh.rotate_ccw(h);
-      } while (h != h0);
-      longest = std::sqrt(longest);
-      mesh.k_ring(v, options.rings, s.rings, s.verts);
-      s.normals.clear();
-      for (int u : s.verts) s.normals.push_back(normals[u]);
-      const StructureTensor tensor = structure_tensor_of_normals(s.normals);
-      if (!(tensor.eigenvalues[0] > 0)) return;
-      const double ratio = tensor.eigenvalues[1] / tensor.eigenvalues[0];
-      value[v] = plain_exponents ? longest * ratio
-                                 : std::pow(longest, options.alpha) * std::pow(ratio, options.beta);
-    });
+    evaluate_eq6(mesh, dirty, normals, locked, options, scratch, value);
     changed.clear();
 
     candidates.clear();
@@ -454,57 +557,13 @@ CoarsenResult coarsen(const SurfaceMesh& input, const CoarsenOptions& options,
     // Most deletable first (flattest and densest), index as the tie-break: deterministic.
     std::sort(candidates.begin(), candidates.end(),
               [&](int a, int b) { return value[a] < value[b] || (value[a] == value[b] && a < b); });
-    selected.clear();
-    for (int v : candidates) {
-      if (blocked[v] == pass) continue;
-      selected.push_back(v);
-      blocked[v] = pass;
-      const int h0 = mesh.outgoing(v);
-      int h = h0;
-      do {
-        blocked[mesh.head(h)] = pass;
-        h = mesh.rotate_ccw(h);
-      } while (h != h0);
-    }
-
-    // Colour the selection so that two vertices of one colour share no ring vertex: their
-    // holes, the faces around the holes, and the edges a filling may create are then
-    // disjoint, so a colour class is planned in parallel on the current mesh and applied
-    // in priority order with exactly the outcome of a sequential run, whatever the
-    // thread count. Classes run in colour order, each seeing the previous ones' edits.
-    color_mask.assign(static_cast<std::size_t>(n), 0);
-    for (auto& members : classes) members.clear();
-    for (int v : selected) {
-      mesh.one_ring(v, main_scratch.verts);
-      std::uint64_t used = 0;
-      for (int r : main_scratch.verts) used |= color_mask[r];
-      if (~used == 0) continue;  // 64 colours taken around v: leave it to the next pass
-      const int color = std::countr_zero(~used);
-      for (int r : main_scratch.verts) color_mask[r] |= std::uint64_t{1} << color;
-      if (static_cast<int>(classes.size()) <= color) classes.resize(color + 1);
-      classes[color].push_back(v);
-    }
-
+    select_disjoint_stars(mesh, candidates, pass, blocked, selected);
+    colour_selection(mesh, selected, color_mask, classes, ring);
+    // Classes run in colour order, each seeing the previous ones' edits.
     std::size_t removed_this_pass = 0;
     for (const std::vector<int>& members : classes) {
-      plans.resize(std::max(plans.size(), members.size()));
-      planned.assign(members.size(), 0);
-      tbb::parallel_for(std::size_t{0}, members.size(), [&](std::size_t i) {
-        planned[i] = plan_removal(mesh, members[i], scratch.local(), plans[i]) ? 1 : 0;
-      });
-      for (std::size_t i = 0; i < members.size(); ++i) {
-        const int v = members[i];
-        if (!planned[i] || component_size[component[v]] <= 4) continue;
-        try {
-          mesh.remove_vertex(v, plans[i]);
-        } catch (const Error&) {
-          continue;  // the gateway refused (cannot happen for a valid plan): keep v
-        }
-        value[v] = kInf;
-        for (const Triangle& t : plans[i]) changed.insert(changed.end(), t.begin(), t.end());
-        --component_size[component[v]];
-        ++removed_this_pass;
-      }
+      removed_this_pass +=
+          remove_class(mesh, members, components, scratch, plans, planned, value, changed);
     }
     result.removed += removed_this_pass;
     result.passes = pass + 1;
