@@ -167,34 +167,19 @@ void triangulate_loop(const int* loop, int n, const int* vertex_of_edge,
   for (int k = 0; k < n; ++k) emit(vid(k), vid((k + 1) % n), c);
 }
 
-}  // namespace
-
-SurfaceMesh marching_cubes(const Grid& grid, double isovalue, const Reporter& reporter) {
-  if (grid.dims[0] < 1 || grid.dims[1] < 1 || grid.dims[2] < 1 || grid.values.size() != grid.size())
-    throw Error("marching cubes needs a non-empty grid whose value count matches its size");
-  if (!std::isfinite(isovalue)) throw Error("the isovalue must be a finite number");
-  const Tables& tab = tables();
-  reporter.progress("marching cubes", 0.0);
-
-  // Outside padding: the smallest sample if it is outside, so boundary vertices sit on the
-  // grid's own scale; otherwise one unit below the isovalue.
-  double lowest = std::numeric_limits<double>::max();
-  bool boundary_inside = false;
-  for (double v : grid.values)
-    if (std::isfinite(v)) lowest = std::min(lowest, v);
-  const double pad = lowest < isovalue ? lowest : isovalue - 1.0;
-  const PaddedField field(grid, isovalue, pad);
+// Samples >= isovalue are inside (NaN is outside); the padding layer is outside. Also says
+// whether any inside sample lies on the grid's own boundary.
+std::vector<std::uint8_t> classify_samples(const Grid& grid, const PaddedField& field,
+                                           double isovalue, bool& boundary_inside) {
   const int P = field.dims[0], Q = field.dims[1], R = field.dims[2];
-  const std::size_t plane_size = static_cast<std::size_t>(P) * Q;
-
-  // Samples >= isovalue are inside (NaN is outside).
-  std::vector<std::uint8_t> inside(plane_size * R, 0);
+  std::vector<std::uint8_t> inside(static_cast<std::size_t>(P) * Q * R, 0);
   tbb::parallel_for(tbb::blocked_range<int>(1, R - 1), [&](const tbb::blocked_range<int>& r) {
     for (int k = r.begin(); k != r.end(); ++k)
       for (int j = 1; j < Q - 1; ++j)
         for (int i = 1; i < P - 1; ++i)
           inside[field.index(i, j, k)] = grid.at(i - 1, j - 1, k - 1) >= isovalue ? 1 : 0;
   });
+  boundary_inside = false;
   for (int k = 1; k < R - 1 && !boundary_inside; ++k)
     for (int j = 1; j < Q - 1 && !boundary_inside; ++j) {
       const bool boundary_row = j == 1 || k == 1 || j == Q - 2 || k == R - 2;
@@ -204,15 +189,19 @@ SurfaceMesh marching_cubes(const Grid& grid, double isovalue, const Reporter& re
           break;
         }
     }
-  if (boundary_inside)
-    reporter.warn(
-        "the volume is inside the surface on its boundary; the surface is closed "
-        "one cell beyond the grid");
+  return inside;
+}
 
-  // Pass 1: one vertex per crossed grid edge, numbered by (plane, row, sample, axis).
-  // Left uninitialised: only entries of crossed edges are written and read, so the pages
-  // of empty space are never touched.
-  const auto edge_vertex = std::make_unique_for_overwrite<std::int32_t[]>(3 * plane_size * R);
+// Pass 1: one vertex per crossed grid edge, numbered by (plane, row, sample, axis), into
+// `points`; edge_vertex[3 * sample + axis] is its number. Left uninitialised elsewhere: only
+// entries of crossed edges are written and read, so the pages of empty space are never
+// touched.
+std::unique_ptr<std::int32_t[]> place_edge_vertices(const PaddedField& field,
+                                                    const std::vector<std::uint8_t>& inside,
+                                                    double isovalue, std::vector<Vec3>& points) {
+  const int P = field.dims[0], Q = field.dims[1], R = field.dims[2];
+  const std::size_t plane_size = static_cast<std::size_t>(P) * Q;
+  auto edge_vertex = std::make_unique_for_overwrite<std::int32_t[]>(3 * plane_size * R);
   std::vector<std::size_t> plane_count(static_cast<std::size_t>(R) + 1, 0);
   auto crossing = [&](std::size_t s, int axis, int i, int j, int k) {
     const int upper[3] = {i + (axis == 0), j + (axis == 1), k + (axis == 2)};
@@ -235,8 +224,7 @@ SurfaceMesh marching_cubes(const Grid& grid, double isovalue, const Reporter& re
   if (edge_vertices > static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max() / 2))
     throw Error("the surface would have too many vertices; use a coarser spacing");
 
-  SurfaceMesh mesh;
-  mesh.points.resize(edge_vertices);
+  points.resize(edge_vertices);
   tbb::parallel_for(tbb::blocked_range<int>(0, R), [&](const tbb::blocked_range<int>& r) {
     for (int k = r.begin(); k != r.end(); ++k) {
       std::size_t next = plane_count[k];
@@ -256,104 +244,102 @@ SurfaceMesh marching_cubes(const Grid& grid, double isovalue, const Reporter& re
             if (!std::isfinite(u)) u = 0.5;
             u = std::clamp(u, kNodeGap, 1.0 - kNodeGap);
             const double w = lower_in ? u : 1.0 - u;
-            mesh.points[next] =
-                (1.0 - w) * field.position(i, j, k) + w * field.position(i1, j1, k1);
+            points[next] = (1.0 - w) * field.position(i, j, k) + w * field.position(i1, j1, k1);
             edge_vertex[3 * s + axis] = static_cast<std::int32_t>(next);
             ++next;
           }
         }
     }
   });
-  reporter.progress("marching cubes", 0.3);
+  return edge_vertex;
+}
 
-  // Pass 2: per cube, the crossings on each face are joined into segments (the face's
-  // ambiguity decided by the asymptotic decider, from the face's values only, so both
-  // cubes sharing it agree); the segments form closed loops that are triangulated.
-  const int cube_slabs = R - 1;
-  std::vector<SlabOutput> slabs(static_cast<std::size_t>(cube_slabs));
-  std::atomic<int> slabs_done{0};
-  std::mutex report_mutex;
-  tbb::parallel_for(tbb::blocked_range<int>(0, cube_slabs), [&](const tbb::blocked_range<int>& r) {
-    for (int k = r.begin(); k != r.end(); ++k) {
-      SlabOutput& out = slabs[static_cast<std::size_t>(k)];
-      for (int j = 0; j + 1 < Q; ++j)
-        for (int i = 0; i + 1 < P; ++i) {
-          int mask = 0;
-          for (int c = 0; c < 8; ++c)
-            if (inside[field.index(i + kCorner[c][0], j + kCorner[c][1], k + kCorner[c][2])])
-              mask |= 1 << c;
-          if (mask == 0 || mask == 255) continue;
-          double g[8];
-          for (int c = 0; c < 8; ++c)
-            g[c] = field.value(i + kCorner[c][0], j + kCorner[c][1], k + kCorner[c][2]) - isovalue;
-          int vertex_of_edge[12];
-          for (int e = 0; e < 12; ++e) {
-            const int c = kEdge[e][0];
-            const std::size_t s =
-                field.index(i + kCorner[c][0], j + kCorner[c][1], k + kCorner[c][2]);
-            const bool crossed = ((mask >> kEdge[e][0]) & 1) != ((mask >> kEdge[e][1]) & 1);
-            vertex_of_edge[e] = crossed ? edge_vertex[3 * s + e / 4] : -1;
-          }
-          int next_edge[12];
-          for (int& e : next_edge) e = -1;
-          for (int f = 0; f < 6; ++f) {
-            const int* fc = kFace[f];
-            bool in[4];
-            int n_in = 0;
-            for (int q = 0; q < 4; ++q) {
-              in[q] = (mask >> fc[q]) & 1;
-              n_in += in[q];
-            }
-            if (n_in == 0 || n_in == 4) continue;
-            // Crossings walking counter-clockwise: leaving the inside, entering it.
-            int leave[2], enter[2], n_leave = 0, n_enter = 0;
-            for (int q = 0; q < 4; ++q) {
-              const bool a = in[q], b = in[(q + 1) % 4];
-              if (a && !b) leave[n_leave++] = q;
-              if (!a && b) enter[n_enter++] = q;
-            }
-            if (n_leave == 1) {
-              next_edge[tab.face_edge[f][leave[0]]] = tab.face_edge[f][enter[0]];
-              continue;
-            }
-            // Four crossings: inside corners at q and q+2. The bilinear interpolant's
-            // saddle is inside iff g_in0 * g_in2 >= g_out1 * g_out3 (exact products, so
-            // both cubes decide identically).
-            const int q0 = in[0] ? 0 : 1;
-            const bool connect_inside =
-                g[fc[q0]] * g[fc[q0 + 2]] >= g[fc[q0 + 1]] * g[fc[(q0 + 3) % 4]];
-            for (int l = 0; l < 2; ++l) {
-              const int q = leave[l];  // corner q inside, q+1 outside
-              // Connected inside: cut off the outside corner q+1 (leave q -> enter q+1).
-              // Separated inside: cut off the inside corner q (leave q -> enter q-1).
-              const int target = connect_inside ? (q + 1) % 4 : (q + 3) % 4;
-              next_edge[tab.face_edge[f][q]] = tab.face_edge[f][target];
-            }
-          }
-          bool used[12] = {};
-          for (int e0 = 0; e0 < 12; ++e0) {
-            if (next_edge[e0] < 0 || used[e0]) continue;
-            int loop[12];
-            int n = 0;
-            for (int e = e0; !used[e]; e = next_edge[e]) {
-              used[e] = true;
-              loop[n++] = e;
-            }
-            triangulate_loop(loop, n, vertex_of_edge, mesh.points, out);
-          }
-        }
-      const int done = ++slabs_done;
-      std::unique_lock lock(report_mutex, std::try_to_lock);
-      if (lock.owns_lock()) reporter.progress("marching cubes", 0.3 + 0.65 * done / cube_slabs);
+// The crossings on each face of a cube (corner mask `mask`, values minus the isovalue `g`)
+// joined into segments: next_edge[e] is the edge the surface's loop goes to from edge e
+// (-1: e is not crossed). A face's ambiguity is decided by the asymptotic decider, from the
+// face's values only, so both cubes sharing it agree.
+void join_face_crossings(int mask, const double g[8], int next_edge[12]) {
+  const Tables& tab = tables();
+  for (int e = 0; e < 12; ++e) next_edge[e] = -1;
+  for (int f = 0; f < 6; ++f) {
+    const int* fc = kFace[f];
+    bool in[4];
+    int n_in = 0;
+    for (int q = 0; q < 4; ++q) {
+      in[q] = (mask >> fc[q]) & 1;
+      n_in += in[q];
     }
-  });
+    if (n_in == 0 || n_in == 4) continue;
+    // Crossings walking counter-clockwise: leaving the inside, entering it.
+    int leave[2], enter[2], n_leave = 0, n_enter = 0;
+    for (int q = 0; q < 4; ++q) {
+      const bool a = in[q], b = in[(q + 1) % 4];
+      if (a && !b) leave[n_leave++] = q;
+      if (!a && b) enter[n_enter++] = q;
+    }
+    if (n_leave == 1) {
+      next_edge[tab.face_edge[f][leave[0]]] = tab.face_edge[f][enter[0]];
+      continue;
+    }
+    // Four crossings: inside corners at q and q+2. The bilinear interpolant's saddle is
+    // inside iff g_in0 * g_in2 >= g_out1 * g_out3 (exact products, so both cubes decide
+    // identically).
+    const int q0 = in[0] ? 0 : 1;
+    const bool connect_inside = g[fc[q0]] * g[fc[q0 + 2]] >= g[fc[q0 + 1]] * g[fc[(q0 + 3) % 4]];
+    for (int l = 0; l < 2; ++l) {
+      const int q = leave[l];  // corner q inside, q+1 outside
+      // Connected inside: cut off the outside corner q+1 (leave q -> enter q+1).
+      // Separated inside: cut off the inside corner q (leave q -> enter q-1).
+      const int target = connect_inside ? (q + 1) % 4 : (q + 3) % 4;
+      next_edge[tab.face_edge[f][q]] = tab.face_edge[f][target];
+    }
+  }
+}
 
+// Pass 2 for the cube at (i, j, k): its face segments form closed loops, each triangulated
+// into `out`.
+void march_cube(const PaddedField& field, const std::vector<std::uint8_t>& inside,
+                const std::int32_t* edge_vertex, double isovalue, const std::vector<Vec3>& points,
+                int i, int j, int k, SlabOutput& out) {
+  int mask = 0;
+  for (int c = 0; c < 8; ++c)
+    if (inside[field.index(i + kCorner[c][0], j + kCorner[c][1], k + kCorner[c][2])])
+      mask |= 1 << c;
+  if (mask == 0 || mask == 255) return;
+  double g[8];
+  for (int c = 0; c < 8; ++c)
+    g[c] = field.value(i + kCorner[c][0], j + kCorner[c][1], k + kCorner[c][2]) - isovalue;
+  int vertex_of_edge[12];
+  for (int e = 0; e < 12; ++e) {
+    const int c = kEdge[e][0];
+    const std::size_t s = field.index(i + kCorner[c][0], j + kCorner[c][1], k + kCorner[c][2]);
+    const bool crossed = ((mask >> kEdge[e][0]) & 1) != ((mask >> kEdge[e][1]) & 1);
+    vertex_of_edge[e] = crossed ? edge_vertex[3 * s + e / 4] : -1;
+  }
+  int next_edge[12];
+  join_face_crossings(mask, g, next_edge);
+  bool used[12] = {};
+  for (int e0 = 0; e0 < 12; ++e0) {
+    if (next_edge[e0] < 0 || used[e0]) continue;
+    int loop[12];
+    int n = 0;
+    for (int e = e0; !used[e]; e = next_edge[e]) {
+      used[e] = true;
+      loop[n++] = e;
+    }
+    triangulate_loop(loop, n, vertex_of_edge, points, out);
+  }
+}
+
+// The slabs' triangles and centroid vertices appended to `mesh` in slab order, the centroid
+// references (negative) renumbered.
+void append_slabs(const std::vector<SlabOutput>& slabs, SurfaceMesh& mesh) {
   std::size_t n_triangles = 0, n_extra = 0;
   for (const SlabOutput& s : slabs) {
     n_triangles += s.triangles.size();
     n_extra += s.extra_points.size();
   }
-  mesh.points.reserve(edge_vertices + n_extra);
+  mesh.points.reserve(mesh.points.size() + n_extra);
   mesh.triangles.reserve(n_triangles);
   for (const SlabOutput& s : slabs) {
     const int base = static_cast<int>(mesh.points.size());
@@ -364,6 +350,53 @@ SurfaceMesh marching_cubes(const Grid& grid, double isovalue, const Reporter& re
       mesh.triangles.push_back(t);
     }
   }
+}
+
+}  // namespace
+
+SurfaceMesh marching_cubes(const Grid& grid, double isovalue, const Reporter& reporter) {
+  if (grid.dims[0] < 1 || grid.dims[1] < 1 || grid.dims[2] < 1 || grid.values.size() != grid.size())
+    throw Error("marching cubes needs a non-empty grid whose value count matches its size");
+  if (!std::isfinite(isovalue)) throw Error("the isovalue must be a finite number");
+  reporter.progress("marching cubes", 0.0);
+
+  // Outside padding: the smallest sample if it is outside, so boundary vertices sit on the
+  // grid's own scale; otherwise one unit below the isovalue.
+  double lowest = std::numeric_limits<double>::max();
+  for (double v : grid.values)
+    if (std::isfinite(v)) lowest = std::min(lowest, v);
+  const double pad = lowest < isovalue ? lowest : isovalue - 1.0;
+  const PaddedField field(grid, isovalue, pad);
+  const int P = field.dims[0], Q = field.dims[1], R = field.dims[2];
+
+  bool boundary_inside = false;
+  const std::vector<std::uint8_t> inside = classify_samples(grid, field, isovalue, boundary_inside);
+  if (boundary_inside)
+    reporter.warn(
+        "the volume is inside the surface on its boundary; the surface is closed "
+        "one cell beyond the grid");
+
+  SurfaceMesh mesh;
+  const auto edge_vertex = place_edge_vertices(field, inside, isovalue, mesh.points);
+  reporter.progress("marching cubes", 0.3);
+
+  // Pass 2, slab by slab in parallel (each slab's output apart, joined in order).
+  const int cube_slabs = R - 1;
+  std::vector<SlabOutput> slabs(static_cast<std::size_t>(cube_slabs));
+  std::atomic<int> slabs_done{0};
+  std::mutex report_mutex;
+  tbb::parallel_for(tbb::blocked_range<int>(0, cube_slabs), [&](const tbb::blocked_range<int>& r) {
+    for (int k = r.begin(); k != r.end(); ++k) {
+      SlabOutput& out = slabs[static_cast<std::size_t>(k)];
+      for (int j = 0; j + 1 < Q; ++j)
+        for (int i = 0; i + 1 < P; ++i)
+          march_cube(field, inside, edge_vertex.get(), isovalue, mesh.points, i, j, k, out);
+      const int done = ++slabs_done;
+      std::unique_lock lock(report_mutex, std::try_to_lock);
+      if (lock.owns_lock()) reporter.progress("marching cubes", 0.3 + 0.65 * done / cube_slabs);
+    }
+  });
+  append_slabs(slabs, mesh);
   reporter.progress("marching cubes", 1.0);
   return mesh;
 }
