@@ -77,6 +77,17 @@ struct MultigridPreconditioner::Impl {
   bool coarse_shifted = false;
   std::size_t mesh_levels = 0;
   mutable std::vector<CycleWorkspace> workspace;  // one per level
+  const SparseMatrix* fine = nullptr;             // the caller's fine operator, if compressed
+
+  // Level l's operator: the caller's matrix on level 0 (when compressed), else `owned`.
+  const SparseMatrix& operator_of(std::size_t l) const {
+    return l == 0 && fine ? *fine : levels[l].owned;
+  }
+  void add_mesh_levels(std::span<const int> fine_free_to_full,
+                       std::span<const SparseMatrix> prolongations,
+                       std::vector<MeshOperator>& mesh_operators);
+  void add_aggregation_levels();
+  void set_up_smoothers_and_coarsest_solve();
 
   // x = V-cycle(b) from a zero guess on level l; *product = A x when asked for (level 0
   // only: the last backward sweep gives it from its own pass over A).
@@ -112,25 +123,48 @@ struct MultigridPreconditioner::Impl {
   }
 };
 
-MultigridPreconditioner::MultigridPreconditioner(const SparseMatrix& a,
-                                                 std::span<const int> fine_free_to_full,
-                                                 std::span<const SparseMatrix> prolongations,
-                                                 const MultigridOptions& options,
-                                                 std::vector<MeshOperator> mesh_operators)
-    : impl_(std::make_unique<Impl>()) {
-  if (options.smoothing_sweeps < 1)
-    throw Error("multigrid: at least one smoothing sweep is needed (got " +
-                std::to_string(options.smoothing_sweeps) + ")");
-  impl_->options = options;
-  auto& levels = impl_->levels;
-  levels.emplace_back();
-  if (!a.isCompressed()) {
-    levels[0].owned = a;
-    levels[0].owned.makeCompressed();
+namespace {
+
+// The coarse unknowns of a mesh level reached by `full` (level's vertices x coarse vertices)
+// from the unknowns `rows_kept`: a given operator's own free vertices (its Dirichlet
+// vertices are not coarse unknowns), or else the columns whose largest weight among those
+// rows reaches drop_column_below. column_index[c] is c's unknown number or -1.
+void choose_coarse_unknowns(const SparseMatrix& full, const std::vector<int>& rows_kept,
+                            const MeshOperator* given, const MultigridOptions& options,
+                            std::vector<int>& column_index, std::vector<int>& coarse_kept) {
+  column_index.assign(static_cast<std::size_t>(full.cols()), -1);
+  coarse_kept.clear();
+  if (given) {
+    for (int v : given->free_to_full) {
+      if (v < 0 || v >= full.cols())
+        throw Error("multigrid: a coarse operator refers to vertex " + std::to_string(v) +
+                    " beyond its level");
+      column_index[static_cast<std::size_t>(v)] = static_cast<int>(coarse_kept.size());
+      coarse_kept.push_back(v);
+    }
+    return;
   }
-  const auto operator_of = [&](std::size_t l) -> const SparseMatrix& {
-    return l == 0 && a.isCompressed() ? a : levels[l].owned;
-  };
+  // Largest weight per coarse column among the rows that stay.
+  std::vector<double> column_max(static_cast<std::size_t>(full.cols()), 0.0);
+  for (int v : rows_kept) {
+    for (SparseMatrix::InnerIterator it(full, v); it; ++it) {
+      auto& m = column_max[static_cast<std::size_t>(it.col())];
+      m = std::max(m, std::abs(it.value()));
+    }
+  }
+  for (std::size_t c = 0; c < column_max.size(); ++c) {
+    if (column_max[c] >= options.drop_column_below) {
+      column_index[c] = static_cast<int>(coarse_kept.size());
+      coarse_kept.push_back(static_cast<int>(c));
+    }
+  }
+}
+
+}  // namespace
+
+void MultigridPreconditioner::Impl::add_mesh_levels(std::span<const int> fine_free_to_full,
+                                                    std::span<const SparseMatrix> prolongations,
+                                                    std::vector<MeshOperator>& mesh_operators) {
   // rows_kept[i] = vertex (of the current coarse mesh) behind unknown i on that level.
   std::vector<int> rows_kept(fine_free_to_full.begin(), fine_free_to_full.end());
   // A hierarchy level that is barely smaller than the current one would cost as much as
@@ -138,6 +172,7 @@ MultigridPreconditioner::MultigridPreconditioner(const SparseMatrix& a,
   // the next one.
   SparseMatrix pending;
   bool has_pending = false;
+  std::vector<int> column_index, coarse_kept;
   for (std::size_t l = 0; l < prolongations.size(); ++l) {
     SparseMatrix composed;
     if (has_pending) composed = multiply(pending, prolongations[l]);
@@ -150,34 +185,8 @@ MultigridPreconditioner::MultigridPreconditioner(const SparseMatrix& a,
                     std::to_string(v));
       }
     }
-    std::vector<int> column_index(static_cast<std::size_t>(full.cols()), -1);
-    std::vector<int> coarse_kept;
     MeshOperator* given = l < mesh_operators.size() ? &mesh_operators[l] : nullptr;
-    if (given) {
-      // The coarse mesh's own unknowns: its Dirichlet vertices are not coarse unknowns.
-      for (int v : given->free_to_full) {
-        if (v < 0 || v >= full.cols())
-          throw Error("multigrid: a coarse operator refers to vertex " + std::to_string(v) +
-                      " beyond its level");
-        column_index[static_cast<std::size_t>(v)] = static_cast<int>(coarse_kept.size());
-        coarse_kept.push_back(v);
-      }
-    } else {
-      // Largest weight per coarse column among the rows that stay.
-      std::vector<double> column_max(static_cast<std::size_t>(full.cols()), 0.0);
-      for (int v : rows_kept) {
-        for (SparseMatrix::InnerIterator it(full, v); it; ++it) {
-          auto& m = column_max[static_cast<std::size_t>(it.col())];
-          m = std::max(m, std::abs(it.value()));
-        }
-      }
-      for (std::size_t c = 0; c < column_max.size(); ++c) {
-        if (column_max[c] >= options.drop_column_below) {
-          column_index[c] = static_cast<int>(coarse_kept.size());
-          coarse_kept.push_back(static_cast<int>(c));
-        }
-      }
-    }
+    choose_coarse_unknowns(full, rows_kept, given, options, column_index, coarse_kept);
     if (coarse_kept.empty()) break;
     const double ratio =
         static_cast<double>(coarse_kept.size()) / static_cast<double>(rows_kept.size());
@@ -207,10 +216,13 @@ MultigridPreconditioner::MultigridPreconditioner(const SparseMatrix& a,
       coarse.owned.swap(product);
     }
     coarse.owned.makeCompressed();
-    rows_kept = std::move(coarse_kept);
+    rows_kept.swap(coarse_kept);
   }
-  impl_->mesh_levels = levels.size();
-  // Below the mesh hierarchy: algebraic levels until a direct solve is cheap.
+  mesh_levels = levels.size();
+}
+
+// Below the mesh hierarchy: algebraic levels until a direct solve is cheap.
+void MultigridPreconditioner::Impl::add_aggregation_levels() {
   while (operator_of(levels.size() - 1).rows() > options.max_direct_unknowns) {
     const std::size_t current = levels.size() - 1;
     SparseMatrix p = smoothed_aggregation_prolongation(operator_of(current), options.aggregation);
@@ -225,17 +237,19 @@ MultigridPreconditioner::MultigridPreconditioner(const SparseMatrix& a,
     coarse.owned.swap(product);
     coarse.owned.makeCompressed();
   }
+}
+
+void MultigridPreconditioner::Impl::set_up_smoothers_and_coarsest_solve() {
   // The level list is final: operators and smoothers can point into it now.
   for (std::size_t l = 0; l < levels.size(); ++l) {
     levels[l].a = &operator_of(l);
     levels[l].smoother = make_gauss_seidel(*levels[l].a, options.smoothing_blocks);
   }
-
-  impl_->workspace.resize(levels.size());
+  workspace.resize(levels.size());
 
   const ColMajor coarsest(*levels.back().a);
-  impl_->coarse_solver.compute(coarsest);
-  if (impl_->coarse_solver.info() != Eigen::Success && impl_->levels.size() > 1) {
+  coarse_solver.compute(coarsest);
+  if (coarse_solver.info() != Eigen::Success && levels.size() > 1) {
     // Non-nested hierarchies can give linearly dependent coarse basis functions (after the
     // Dirichlet rows are dropped), so P^T A P is only semidefinite. Its null vectors z have
     // P z = 0 (A is definite), so a small diagonal shift changes nothing that is
@@ -244,12 +258,34 @@ MultigridPreconditioner::MultigridPreconditioner(const SparseMatrix& a,
     for (Eigen::Index i = 0; i < shifted.rows(); ++i) {
       shifted.coeffRef(i, i) *= 1.0 + options.coarse_shift;
     }
-    impl_->coarse_solver.compute(shifted);
-    impl_->coarse_shifted = true;
+    coarse_solver.compute(shifted);
+    coarse_shifted = true;
   }
-  if (impl_->coarse_solver.info() != Eigen::Success) {
+  if (coarse_solver.info() != Eigen::Success) {
     throw Error("multigrid: the coarsest operator could not be factorised");
   }
+}
+
+MultigridPreconditioner::MultigridPreconditioner(const SparseMatrix& a,
+                                                 std::span<const int> fine_free_to_full,
+                                                 std::span<const SparseMatrix> prolongations,
+                                                 const MultigridOptions& options,
+                                                 std::vector<MeshOperator> mesh_operators)
+    : impl_(std::make_unique<Impl>()) {
+  if (options.smoothing_sweeps < 1)
+    throw Error("multigrid: at least one smoothing sweep is needed (got " +
+                std::to_string(options.smoothing_sweeps) + ")");
+  impl_->options = options;
+  impl_->levels.emplace_back();
+  if (a.isCompressed()) {
+    impl_->fine = &a;
+  } else {
+    impl_->levels[0].owned = a;
+    impl_->levels[0].owned.makeCompressed();
+  }
+  impl_->add_mesh_levels(fine_free_to_full, prolongations, mesh_operators);
+  impl_->add_aggregation_levels();
+  impl_->set_up_smoothers_and_coarsest_solve();
 }
 
 MultigridPreconditioner::~MultigridPreconditioner() = default;
