@@ -47,6 +47,97 @@ void HierarchyOptions::validate() const {
   tetmesh.validate();
 }
 
+namespace {
+
+// Level `level`'s surface, processed from level L-1's (level 0: from the input surface),
+// and marked. Progress goes to `reporter` as the level's first share.
+void process_level_surface(Hierarchy& hierarchy, HierarchyReport& report, int level,
+                           const SurfaceMesh& surface, const HierarchyOptions& options,
+                           const TetMeshOptions& tet_options, const Reporter& reporter,
+                           double share) {
+  const auto L = static_cast<std::size_t>(level);
+  HierarchyLevel& out = hierarchy.levels[L];
+  const auto tick = std::chrono::steady_clock::now();
+  out.t0 = options.t0[L];
+  ProcessingOptions processing = options.processing;
+  processing.t0 = {options.t0[L]};
+  processing.record_stages = false;
+  const SurfaceMesh& source = level == 0 ? surface : hierarchy.levels[L - 1].surface;
+  Reporter sub;
+  sub.on_warning = reporter.on_warning;
+  if (reporter.on_progress) {
+    sub.on_progress = [&, base = 2.0 * level * share](std::string_view, double f) {
+      reporter.progress("hierarchy", base + f * share);
+    };
+  }
+  try {
+    auto processed = process_surface(source, processing, sub);
+    out.surface = std::move(processed.mesh);
+    if (level > 0) out.surface_provenance = std::move(processed.provenance);
+  } catch (const Error& e) {
+    throw Error("hierarchy level " + std::to_string(level) + " (T0 = " +
+                std::to_string(options.t0[L]) + "): surface processing failed: " + e.what());
+  }
+  mark_surface(out.surface, tet_options.active_site);
+  report.levels[L].surface_seconds = seconds_since(tick);
+  reporter.progress("hierarchy", (2.0 * level + 1.0) * share);
+}
+
+// Reverse Cuthill-McKee renumbering of a level's volume (when asked for), with the
+// bandwidths before and after.
+void renumber_level(HierarchyLevel& out, HierarchyLevelReport& level_report, bool renumber) {
+  const auto tick = std::chrono::steady_clock::now();
+  level_report.bandwidth_before = vertex_bandwidth(out.volume);
+  if (renumber) {
+    out.volume_permutation = reverse_cuthill_mckee(out.volume);
+    out.volume = sort_cells_by_vertex(permute_vertices(out.volume, out.volume_permutation));
+  }
+  level_report.bandwidth_after = vertex_bandwidth(out.volume);
+  level_report.renumber_seconds = seconds_since(tick);
+}
+
+// The prolongations from level `level` to the finer level-1.
+void build_transfer(Hierarchy& hierarchy, HierarchyLevelReport& level_report, int level) {
+  const auto L = static_cast<std::size_t>(level);
+  const auto tick = std::chrono::steady_clock::now();
+  const HierarchyLevel& out = hierarchy.levels[L];
+  const HierarchyLevel& fine = hierarchy.levels[L - 1];
+  LevelTransfer& transfer = hierarchy.transfers[L - 1];
+  transfer.coarse_level = level;
+  transfer.fine_level = level - 1;
+  transfer.volume = volume_prolongation(out.volume, fine.volume, &level_report.volume_transfer);
+  transfer.surface = surface_prolongation(out.surface, fine.surface, out.surface_provenance,
+                                          &level_report.surface_transfer);
+  level_report.transfer_seconds = seconds_since(tick);
+}
+
+// Level `level`'s volume, then its renumbering and its transfer to level-1 (finished before
+// this runs): none needs the next level, so all run on the volume thread, beside the next
+// level's surface processing. Warnings are collected, so that only the calling thread
+// calls the reporter.
+void mesh_level_volume(Hierarchy& hierarchy, HierarchyReport& report, int level, const Atoms& atoms,
+                       const HierarchyOptions& options, const TetMeshOptions& tet_options,
+                       std::vector<std::string>& warnings) {
+  const auto L = static_cast<std::size_t>(level);
+  const auto tick = std::chrono::steady_clock::now();
+  Reporter tet_sub;
+  tet_sub.on_warning = [&warnings](std::string_view w) { warnings.emplace_back(w); };
+  try {
+    TetMeshOptions level_options = tet_options;
+    level_options.size_factor = tet_options.size_factor * std::pow(options.size_growth, level);
+    hierarchy.levels[L].volume = tetrahedralize(hierarchy.levels[L].surface, atoms, level_options,
+                                                tet_sub, &report.levels[L].tetmesh);
+  } catch (const Error& e) {
+    throw Error("hierarchy level " + std::to_string(level) +
+                ": volume meshing failed: " + e.what());
+  }
+  report.levels[L].volume_seconds = seconds_since(tick);
+  renumber_level(hierarchy.levels[L], report.levels[L], options.renumber);
+  if (level > 0) build_transfer(hierarchy, report.levels[L], level);
+}
+
+}  // namespace
+
 Hierarchy build_hierarchy(const SurfaceMesh& surface, const Atoms& atoms,
                           const HierarchyOptions& options, const Reporter& reporter,
                           HierarchyReport* report) {
@@ -61,92 +152,19 @@ Hierarchy build_hierarchy(const SurfaceMesh& surface, const Atoms& atoms,
   hierarchy.levels.resize(static_cast<std::size_t>(count));
   local.levels.resize(static_cast<std::size_t>(count));
 
-  // Surface of one level: level L is processed from level L-1's surface.
-  auto process_level = [&](int level) {
-    const auto L = static_cast<std::size_t>(level);
-    HierarchyLevel& out = hierarchy.levels[L];
-    const auto tick = std::chrono::steady_clock::now();
-    out.t0 = options.t0[L];
-    ProcessingOptions processing = options.processing;
-    processing.t0 = {options.t0[L]};
-    processing.record_stages = false;
-    const SurfaceMesh& source = level == 0 ? surface : hierarchy.levels[L - 1].surface;
-    Reporter sub;
-    sub.on_warning = reporter.on_warning;
-    if (reporter.on_progress) {
-      sub.on_progress = [&, base = 2.0 * level * share](std::string_view, double f) {
-        reporter.progress("hierarchy", base + f * share);
-      };
-    }
-    try {
-      auto processed = process_surface(source, processing, sub);
-      out.surface = std::move(processed.mesh);
-      if (level > 0) out.surface_provenance = std::move(processed.provenance);
-    } catch (const Error& e) {
-      throw Error("hierarchy level " + std::to_string(level) + " (T0 = " +
-                  std::to_string(options.t0[L]) + "): surface processing failed: " + e.what());
-    }
-    mark_surface(out.surface, tet_options.active_site);
-    local.levels[L].surface_seconds = seconds_since(tick);
-    reporter.progress("hierarchy", (2.0 * level + 1.0) * share);
-  };
-  // Volume of one level. Runs on its own thread: warnings are collected and passed on by
-  // the caller, so the reporter is only ever called from the calling thread.
-  auto mesh_level = [&](int level, std::vector<std::string>& warnings) {
-    const auto L = static_cast<std::size_t>(level);
-    const auto tick = std::chrono::steady_clock::now();
-    Reporter tet_sub;
-    tet_sub.on_warning = [&warnings](std::string_view w) { warnings.emplace_back(w); };
-    try {
-      TetMeshOptions level_options = tet_options;
-      level_options.size_factor = tet_options.size_factor * std::pow(options.size_growth, level);
-      hierarchy.levels[L].volume = tetrahedralize(hierarchy.levels[L].surface, atoms, level_options,
-                                                  tet_sub, &local.levels[L].tetmesh);
-    } catch (const Error& e) {
-      throw Error("hierarchy level " + std::to_string(level) +
-                  ": volume meshing failed: " + e.what());
-    }
-    local.levels[L].volume_seconds = seconds_since(tick);
-
-    // Renumbering, and the transfer to the finer level L-1 (finished before this thread
-    // started), need nothing of the next level, so they run here too, beside the next
-    // level's surface processing.
-    HierarchyLevel& out = hierarchy.levels[L];
-    HierarchyLevelReport& level_report = local.levels[L];
-    const auto renumber_tick = std::chrono::steady_clock::now();
-    level_report.bandwidth_before = vertex_bandwidth(out.volume);
-    if (options.renumber) {
-      out.volume_permutation = reverse_cuthill_mckee(out.volume);
-      out.volume = sort_cells_by_vertex(permute_vertices(out.volume, out.volume_permutation));
-    }
-    level_report.bandwidth_after = vertex_bandwidth(out.volume);
-    level_report.renumber_seconds = seconds_since(renumber_tick);
-    if (level > 0) {
-      const auto transfer_tick = std::chrono::steady_clock::now();
-      const HierarchyLevel& fine = hierarchy.levels[L - 1];
-      LevelTransfer& transfer = hierarchy.transfers[L - 1];
-      transfer.coarse_level = level;
-      transfer.fine_level = level - 1;
-      transfer.volume = volume_prolongation(out.volume, fine.volume, &level_report.volume_transfer);
-      transfer.surface = surface_prolongation(out.surface, fine.surface, out.surface_provenance,
-                                              &level_report.surface_transfer);
-      level_report.transfer_seconds = seconds_since(transfer_tick);
-    }
-  };
-
   // TetGen is single-threaded, and level L+1's surface needs only level L's surface, so
   // TetGen meshes level L (then renumbers it and builds its transfer to level L-1) while
   // level L+1's surface is processed on the other core. Each computation is deterministic
   // and reads only finished inputs, so the hierarchy is the same as a sequential run's,
   // whatever the thread count.
   hierarchy.transfers.resize(static_cast<std::size_t>(std::max(0, count - 1)));
-  process_level(0);
+  process_level_surface(hierarchy, local, 0, surface, options, tet_options, reporter, share);
   for (int level = 0; level < count; ++level) {
     std::vector<std::string> warnings;
     std::exception_ptr volume_error;
     std::thread volume_thread([&] {
       try {
-        mesh_level(level, warnings);
+        mesh_level_volume(hierarchy, local, level, atoms, options, tet_options, warnings);
       } catch (...) {
         volume_error = std::current_exception();
       }
@@ -154,7 +172,8 @@ Hierarchy build_hierarchy(const SurfaceMesh& surface, const Atoms& atoms,
     std::exception_ptr surface_error;
     if (level + 1 < count) {
       try {
-        process_level(level + 1);
+        process_level_surface(hierarchy, local, level + 1, surface, options, tet_options, reporter,
+                              share);
       } catch (...) {
         surface_error = std::current_exception();
       }
