@@ -327,11 +327,7 @@ std::vector<std::uint8_t> lock_kept_vertices(const HalfedgeMesh& mesh,
   const int n = mesh.vertex_capacity();
   std::vector<std::uint8_t> locked(static_cast<std::size_t>(n), 0);
   if (!keep_spheres.empty()) {
-    tbb::parallel_for(0, n, [&](int v) {
-      for (const Sphere& sphere : keep_spheres) {
-        if (sphere.contains(mesh.position(v))) locked[v] = 1;
-      }
-    });
+    tbb::parallel_for(0, n, [&](int v) { locked[v] = in_any(keep_spheres, mesh.position(v)); });
   }
   return locked;
 }

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "molmesh/processing/edge_flips.hpp"
+#include "molmesh/processing/surface_fidelity.hpp"
 
 namespace molmesh {
 namespace {
@@ -42,13 +43,8 @@ bool keeps_shape(const HalfedgeMesh& mesh, int v, const Candidate& c, const Vec3
     min_angle = std::min(min_angle, triangle_min_angle(a, b, d));
   }
   if (min_angle < radians(options.min_new_angle_deg)) return false;
-  if (!options.project) return true;
-  for (int i = 0; i < c.count; ++i) {
-    const Triangle& t = c.triangles[i];
-    const Vec3 centroid = (mesh.position(t[0]) + mesh.position(t[1]) + mesh.position(t[2])) / 3.0;
-    if ((options.project(centroid) - centroid).norm() > options.max_centroid_distance) return false;
-  }
-  return true;
+  return centroids_stay_on_surface(mesh, std::span<const Triangle>(c.triangles.data(), c.count),
+                                   options.project, options.max_centroid_distance);
 }
 
 }  // namespace
@@ -64,9 +60,7 @@ std::size_t remove_low_valence_vertices(HalfedgeMesh& mesh,
   std::size_t removed = 0;
   for (int v = 0; v < mesh.vertex_capacity(); ++v) {
     if (!mesh.vertex_alive(v) || valence[v] > 4) continue;
-    bool kept = false;
-    for (const Sphere& s : options.keep_spheres) kept = kept || s.contains(mesh.position(v));
-    if (kept) continue;
+    if (in_any(options.keep_spheres, mesh.position(v))) continue;
     mesh.one_ring(v, ring);
     mesh.incident_faces(v, faces);
     const int m = static_cast<int>(ring.size());

@@ -6,6 +6,8 @@
 #include <numbers>
 #include <vector>
 
+#include "molmesh/processing/surface_fidelity.hpp"
+
 namespace molmesh {
 namespace {
 
@@ -56,8 +58,7 @@ class Planner {
   // Fills `out` and returns true if collapsing u into v passes every test and raises the
   // quality of u's star by at least min_gain_deg.
   bool plan(int u, int v, Collapse& out) {
-    for (const Sphere& s : options_.keep_spheres)
-      if (s.contains(mesh_.position(u))) return false;
+    if (in_any(options_.keep_spheres, mesh_.position(u))) return false;
     mesh_.one_ring(u, ring_);
     mesh_.incident_faces(u, faces_);
     const int m = static_cast<int>(ring_.size());
@@ -104,14 +105,8 @@ class Planner {
     }
     if (new_quality < old_quality + options_.min_gain_deg) return false;
     if (new_quality <= out.new_quality) return false;  // a better plan exists already
-    if (options_.project) {
-      for (const Triangle& t : fan_) {
-        const Vec3 centroid =
-            (mesh_.position(t[0]) + mesh_.position(t[1]) + mesh_.position(t[2])) / 3.0;
-        if ((options_.project(centroid) - centroid).norm() > options_.max_centroid_distance)
-          return false;
-      }
-    }
+    if (!centroids_stay_on_surface(mesh_, fan_, options_.project, options_.max_centroid_distance))
+      return false;
     out.u = u;
     out.v = v;
     out.new_quality = new_quality;

@@ -24,11 +24,8 @@ inline constexpr int kActiveSite = 3;
 // of its vertices lie in the union of the spheres.
 inline bool in_active_site(const std::vector<Vec3>& points, const Triangle& t,
                            const std::vector<Sphere>& spheres) {
-  return std::all_of(t.begin(), t.end(), [&](int v) {
-    const Vec3& p = points[static_cast<std::size_t>(v)];
-    return std::any_of(spheres.begin(), spheres.end(),
-                       [&](const Sphere& s) { return s.contains(p); });
-  });
+  return std::all_of(t.begin(), t.end(),
+                     [&](int v) { return in_any(spheres, points[static_cast<std::size_t>(v)]); });
 }
 
 // A vertex on faces with different markers carries the highest-ranked one: the active site
