@@ -19,25 +19,15 @@ double angle_deg(const Vec3& at, const Vec3& p, const Vec3& q) {
   return std::atan2(u.cross(v).norm(), u.dot(v)) * (180.0 / M_PI);
 }
 
-}  // namespace
-
-SurfaceStats compute_surface_stats(const SurfaceMesh& mesh) {
-  SurfaceStats s;
-  const std::size_t n_points = mesh.points.size();
-  s.triangles = mesh.triangles.size();
-  std::vector<int> degree(n_points, 0);
-  for (const Triangle& t : mesh.triangles)
-    for (int v : t) ++degree[static_cast<std::size_t>(v)];
-  s.vertices = static_cast<std::size_t>(
-      std::count_if(degree.begin(), degree.end(), [](int d) { return d > 0; }));
-
-  // Angles, area, volume (about the bounding-box centre, to limit cancellation).
+// Area, volume (about the bounding-box centre, to limit cancellation) and the angle
+// statistics.
+void measure_geometry(const SurfaceMesh& mesh, SurfaceStats& s) {
   Vec3 lo = Vec3::Constant(1e300), hi = Vec3::Constant(-1e300);
   for (const Vec3& p : mesh.points) {
     lo = lo.cwiseMin(p);
     hi = hi.cwiseMax(p);
   }
-  const Vec3 ref = n_points > 0 ? Vec3(0.5 * (lo + hi)) : Vec3(Vec3::Zero());
+  const Vec3 ref = !mesh.points.empty() ? Vec3(0.5 * (lo + hi)) : Vec3(Vec3::Zero());
   std::array<std::size_t, 18> bins{};
   std::size_t in_40_80 = 0;
   s.min_angle_deg = mesh.triangles.empty() ? 0.0 : 180.0;
@@ -62,9 +52,11 @@ SurfaceStats compute_surface_stats(const SurfaceMesh& mesh) {
       s.angle_histogram_percent[b] = 100.0 * static_cast<double>(bins[b]) / n_angles;
     s.fraction_angles_40_80 = static_cast<double>(in_40_80) / n_angles;
   }
+}
 
-  // Edges: sorted (min, max, direction) keys; a closed oriented manifold has every edge
-  // exactly twice, once in each direction.
+// Edges: sorted (min, max, direction) keys; a closed oriented manifold has every edge exactly
+// twice, once in each direction. Returns the number of distinct edges.
+std::size_t check_edges(const SurfaceMesh& mesh, bool& closed, bool& manifold) {
   std::vector<std::uint64_t> edges;
   edges.reserve(3 * mesh.triangles.size());
   for (const Triangle& t : mesh.triangles)
@@ -75,8 +67,8 @@ SurfaceStats compute_surface_stats(const SurfaceMesh& mesh) {
       edges.push_back((lo_v << 33) | (hi_v << 1) | (a < b ? 0u : 1u));
     }
   std::sort(edges.begin(), edges.end());
-  bool closed = !mesh.triangles.empty();
-  bool manifold = true;
+  closed = !mesh.triangles.empty();
+  manifold = true;
   std::size_t n_edges = 0;
   for (std::size_t i = 0; i < edges.size();) {
     std::size_t j = i;
@@ -88,8 +80,13 @@ SurfaceStats compute_surface_stats(const SurfaceMesh& mesh) {
     if ((edges[i] >> 33) == ((edges[i] >> 1) & 0xffffffffu)) manifold = false;  // a == b
     i = j;
   }
+  return n_edges;
+}
 
-  // Vertex umbrellas: the edges opposite a vertex must form one fan (path or cycle).
+// Vertex umbrellas: a vertex is manifold when the edges opposite to it in its triangles
+// form one fan (path or cycle): one connected set of link vertices.
+bool every_vertex_is_one_fan(const SurfaceMesh& mesh, const std::vector<int>& degree) {
+  const std::size_t n_points = mesh.points.size();
   std::vector<std::size_t> start(n_points + 1, 0);
   for (std::size_t v = 0; v < n_points; ++v) start[v + 1] = start[v] + degree[v];
   std::vector<int> incident(start.back());
@@ -99,11 +96,9 @@ SurfaceStats compute_surface_stats(const SurfaceMesh& mesh) {
       for (int v : mesh.triangles[f])
         incident[fill[static_cast<std::size_t>(v)]++] = static_cast<int>(f);
   }
-  // A vertex is manifold when the edges opposite to it in its triangles form one fan: one
-  // connected set of link vertices.
   std::vector<int> link_vertex;
   std::vector<std::pair<int, int>> link_edges;
-  for (std::size_t v = 0; v < n_points && manifold; ++v) {
+  for (std::size_t v = 0; v < n_points; ++v) {
     link_vertex.clear();
     link_edges.clear();
     auto local = [&](int w) {
@@ -126,18 +121,42 @@ SurfaceStats compute_surface_stats(const SurfaceMesh& mesh) {
     std::size_t fan_count = 0;
     for (std::size_t q = 0; q < link_vertex.size(); ++q)
       if (fans.find_set(q) == q) ++fan_count;
-    if (fan_count > 1) manifold = false;
+    if (fan_count > 1) return false;
   }
-  s.closed = closed && manifold;
-  s.manifold = manifold;
+  return true;
+}
 
+// Vertex-connected components among the vertices that triangles use.
+int count_components(const SurfaceMesh& mesh, const std::vector<int>& degree) {
+  const std::size_t n_points = mesh.points.size();
   boost::disjoint_sets_with_storage<> sets(n_points);
   for (const Triangle& t : mesh.triangles) {
     sets.union_set(t[0], t[1]);
     sets.union_set(t[0], t[2]);
   }
+  int components = 0;
   for (std::size_t v = 0; v < n_points; ++v)
-    if (degree[v] > 0 && sets.find_set(v) == v) ++s.components;
+    if (degree[v] > 0 && sets.find_set(v) == v) ++components;
+  return components;
+}
+
+}  // namespace
+
+SurfaceStats compute_surface_stats(const SurfaceMesh& mesh) {
+  SurfaceStats s;
+  s.triangles = mesh.triangles.size();
+  std::vector<int> degree(mesh.points.size(), 0);
+  for (const Triangle& t : mesh.triangles)
+    for (int v : t) ++degree[static_cast<std::size_t>(v)];
+  s.vertices = static_cast<std::size_t>(
+      std::count_if(degree.begin(), degree.end(), [](int d) { return d > 0; }));
+  measure_geometry(mesh, s);
+  bool closed = false, manifold = false;
+  const std::size_t n_edges = check_edges(mesh, closed, manifold);
+  manifold = manifold && every_vertex_is_one_fan(mesh, degree);
+  s.closed = closed && manifold;
+  s.manifold = manifold;
+  s.components = count_components(mesh, degree);
   s.euler_characteristic =
       static_cast<long>(s.vertices) - static_cast<long>(n_edges) + static_cast<long>(s.triangles);
   return s;
