@@ -24,18 +24,47 @@ foreach(header molmesh/io/surface_mesh_io.hpp molmesh/geometry/predicates.hpp
   endif()
 endforeach()
 
-# Public headers include only public headers: every "molmesh/..." include of an installed
-# header is installed too (internal headers stay in the source tree, lib/CMakeLists.txt).
+# Public headers include only public headers: every quoted include of an installed header,
+# and every <molmesh/...> or <solvers/...> one, resolves inside the installed include tree
+# (next to the header, under include/ or, for the solvers' "solvers/..." form, under
+# include/molmesh/), so no public header includes an internal one (internal headers stay in
+# the source tree, lib/CMakeLists.txt). Lines are matched with the preprocessor's freedom
+# (indentation, "# include") so a guarded or indented include is checked too.
+# Their angle-bracket includes are the standard library's or those of the dependencies that
+# are part of the API (Eigen, nlohmann/json): TetGen, HDF5, gemmi, Boost, TBB, OpenSSL and
+# zlib are linked privately, and a header that needs one (TetGen's tetgenio in
+# tetmesh/tetgen_output.hpp) is internal. Standard headers are the names without "/" or ".".
+set(include_line "^[ \t]*#[ \t]*include[ \t]*")
+set(api_dependencies "^(Eigen|nlohmann)/")
 file(GLOB_RECURSE installed RELATIVE ${prefix}/include ${prefix}/include/molmesh/*.hpp)
+set(problems "")
 foreach(header ${installed})
-  file(STRINGS ${prefix}/include/${header} includes REGEX "^#include \"(molmesh|solvers)/")
-  foreach(line ${includes})
-    string(REGEX REPLACE "^#include \"([^\"]+)\".*" "\\1" included "${line}")
-    if(NOT EXISTS ${prefix}/include/${included} AND NOT EXISTS ${prefix}/include/molmesh/${included})
-      message(FATAL_ERROR "installed ${header} includes ${included}, which is not installed")
+  get_filename_component(folder ${prefix}/include/${header} DIRECTORY)
+  file(STRINGS ${prefix}/include/${header} quoted REGEX "${include_line}\"")
+  file(STRINGS ${prefix}/include/${header} bracketed REGEX "${include_line}<")
+  foreach(line ${quoted})
+    string(REGEX REPLACE "${include_line}\"([^\"]+)\".*" "\\1" included "${line}")
+    if(NOT EXISTS ${folder}/${included} AND NOT EXISTS ${prefix}/include/${included}
+        AND NOT EXISTS ${prefix}/include/molmesh/${included})
+      string(APPEND problems "  ${header} includes \"${included}\", which is not installed\n")
+    endif()
+  endforeach()
+  foreach(line ${bracketed})
+    string(REGEX REPLACE "${include_line}<([^>]+)>.*" "\\1" included "${line}")
+    if(included MATCHES "^(molmesh|solvers)/")
+      if(NOT EXISTS ${prefix}/include/${included} AND NOT EXISTS ${prefix}/include/molmesh/${included})
+        string(APPEND problems "  ${header} includes <${included}>, which is not installed\n")
+      endif()
+    elseif(included MATCHES "[/.]" AND NOT included MATCHES "${api_dependencies}")
+      string(APPEND problems
+        "  ${header} includes <${included}>, a header of a private dependency\n")
     endif()
   endforeach()
 endforeach()
+if(problems)
+  message(FATAL_ERROR "installed headers that only build inside the molmesh tree "
+    "(add them to MOLMESH_INTERNAL_HEADERS, lib/CMakeLists.txt, or drop the include):\n${problems}")
+endif()
 if(EXISTS ${prefix}/include/molmesh/processing/halfedge_mesh.hpp)
   message(FATAL_ERROR "internal header processing/halfedge_mesh.hpp was installed")
 endif()
