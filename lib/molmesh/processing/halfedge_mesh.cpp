@@ -295,6 +295,11 @@ void HalfedgeMesh::replace_faces(std::span<const int> faces, std::span<const Tri
   saved_out.clear();
   for (int v : old_vertices) saved_out.push_back(out_[v]);
   const int saved_marker = face_markers_.empty() ? 0 : face_markers_[faces.empty() ? 0 : faces[0]];
+  // The reused slots take saved_marker below; a rollback gives them their own back.
+  static thread_local std::vector<int> saved_face_markers;
+  saved_face_markers.clear();
+  if (!face_markers_.empty())
+    for (int f : faces) saved_face_markers.push_back(face_markers_[f]);
 
   // Slots: reuse the old faces' slots, append if more triangles than before.
   static thread_local std::vector<int> slots;
@@ -350,6 +355,8 @@ void HalfedgeMesh::replace_faces(std::span<const int> faces, std::span<const Tri
   }
   if (pinched) {
     std::size_t s = 0;
+    for (std::size_t i = 0; i < saved_face_markers.size(); ++i)
+      face_markers_[faces[i]] = saved_face_markers[i];
     for (int f : faces) {
       face_alive_[f] = 1;
       for (int c = 0; c < 3; ++c, ++s) {
