@@ -5,7 +5,6 @@
 // user of cross() fails to link.
 #include <Eigen/Geometry>
 #include <array>
-#include <span>
 
 namespace molmesh {
 
@@ -19,12 +18,5 @@ struct Sphere {
   double radius = 0.0;
   bool contains(const Vec3& p) const { return (p - center).squaredNorm() <= radius * radius; }
 };
-
-// Whether p lies in the union of the spheres (keep-spheres, active sites).
-inline bool in_any(std::span<const Sphere> spheres, const Vec3& p) {
-  for (const Sphere& s : spheres)
-    if (s.contains(p)) return true;
-  return false;
-}
 
 }  // namespace molmesh

@@ -14,6 +14,7 @@
 
 #include "molmesh/core/error.hpp"
 #include "molmesh/geometry/predicates.hpp"
+#include "molmesh/geometry/sphere_union.hpp"
 #include "molmesh/processing/edge_flips.hpp"
 #include "molmesh/processing/halfedge_mesh.hpp"
 #include "molmesh/processing/structure_tensor.hpp"

@@ -5,6 +5,7 @@
 #include <numbers>
 #include <vector>
 
+#include "molmesh/geometry/sphere_union.hpp"
 #include "molmesh/processing/edge_flips.hpp"
 #include "molmesh/processing/surface_fidelity.hpp"
 

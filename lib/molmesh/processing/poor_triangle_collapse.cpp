@@ -6,6 +6,7 @@
 #include <numbers>
 #include <vector>
 
+#include "molmesh/geometry/sphere_union.hpp"
 #include "molmesh/processing/surface_fidelity.hpp"
 
 namespace molmesh {

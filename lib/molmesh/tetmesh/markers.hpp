@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "molmesh/core/geometry.hpp"
+#include "molmesh/geometry/sphere_union.hpp"
 
 namespace molmesh::markers {
 
