@@ -17,21 +17,18 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// `molmesh -q ARGS`, expected to succeed.
-void run(const std::string& args) {
-  const testing::CliRun r = testing::run_cli("-q " + args);
-  ASSERT_EQ(r.exit_code, 0) << args << "\n" << r.output();
-}
-
 TEST(FetkReader, ReadsEveryExportedLevel) {
   const fs::path dir = testing::test_dir();
   testing::write_file(dir / "ion.pqr",
                       "ATOM      1  I   ION     1       0.000   0.000   0.000  1.00  3.00\n");
   const fs::path h5 = dir / "ion.h5";
-  ASSERT_NO_FATAL_FAILURE(run("hierarchy " + (dir / "ion.pqr").string() + " -o " + h5.string() +
-                              " --domain full --outer-radius 20"));
-  ASSERT_NO_FATAL_FAILURE(
-      run("export " + h5.string() + " --all-levels -o " + (dir / "ion").string()));
+  const testing::CliRun hierarchy =
+      testing::run_cli("-q hierarchy " + (dir / "ion.pqr").string() + " -o " + h5.string() +
+                       " --domain full --outer-radius 20");
+  ASSERT_EQ(hierarchy.exit_code, 0) << hierarchy.output();
+  const testing::CliRun exported =
+      testing::run_cli("-q export " + h5.string() + " --all-levels -o " + (dir / "ion").string());
+  ASSERT_EQ(exported.exit_code, 0) << exported.output();
   const Hierarchy h = read_hierarchy(h5);
   ASSERT_GE(h.levels.size(), 2u);
   for (std::size_t l = 0; l < h.levels.size(); ++l) {

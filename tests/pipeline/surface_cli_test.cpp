@@ -16,12 +16,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-int run(const std::string& args, std::string* out = nullptr) {
-  const auto r = molmesh::testing::run_cli(args);
-  if (out) *out = r.out;
-  return r.exit_code;
-}
-
 struct TempDir {
   fs::path path = fs::temp_directory_path() / ("molmesh_surface_cli_" + std::to_string(getpid()));
   TempDir() { fs::create_directories(path); }
@@ -32,9 +26,11 @@ TEST(SurfaceCli, WritesMeshAndStatsJson) {
   TempDir dir;
   const fs::path off = dir.path / "fas2.off";
   const fs::path json = dir.path / "fas2.json";
-  ASSERT_EQ(run("-q surface " + std::string(MOLMESH_TEST_DATA_DIR) + "/fas2.pqr -o " +
-                off.string() + " --raw --stats " + json.string()),
-            0);
+  ASSERT_EQ(
+      molmesh::testing::run_cli("-q surface " + std::string(MOLMESH_TEST_DATA_DIR) +
+                                "/fas2.pqr -o " + off.string() + " --raw --stats " + json.string())
+          .exit_code,
+      0);
   ASSERT_TRUE(fs::exists(off));
   std::ifstream in(json);
   const nlohmann::json doc = nlohmann::json::parse(in);
@@ -83,31 +79,43 @@ TEST(SurfaceCli, WritesMeshAndStatsJson) {
   EXPECT_EQ(doc["parameters"]["spacing"].get<double>(), 0.5);
 
   // `stats --json` on the written mesh agrees with the --stats file.
-  std::string out;
-  ASSERT_EQ(run("stats --json " + off.string(), &out), 0);
-  const nlohmann::json again = nlohmann::json::parse(out);
+  const auto stats_json = molmesh::testing::run_cli("stats --json " + off.string());
+  ASSERT_EQ(stats_json.exit_code, 0);
+  const nlohmann::json again = nlohmann::json::parse(stats_json.out);
   EXPECT_EQ(again["vertices"], doc["vertices"]);
   EXPECT_EQ(again["triangles"], doc["triangles"]);
   EXPECT_EQ(again["euler_characteristic"], doc["euler_characteristic"]);
   EXPECT_NEAR(again["area"].get<double>(), doc["area"].get<double>(),
               1e-6 * doc["area"].get<double>());
-  ASSERT_EQ(run("stats " + off.string(), &out), 0);
-  EXPECT_NE(out.find("manifold"), std::string::npos);
+  const auto stats = molmesh::testing::run_cli("stats " + off.string());
+  ASSERT_EQ(stats.exit_code, 0);
+  EXPECT_NE(stats.out.find("manifold"), std::string::npos);
 }
 
 TEST(SurfaceCli, ExitCodes) {
   TempDir dir;
   const std::string data = MOLMESH_TEST_DATA_DIR;
-  EXPECT_EQ(run("surface " + data + "/missing.pqr -o " + (dir.path / "x.off").string()), 2);
-  EXPECT_EQ(run("surface " + data + "/fas2.pqr -o " + (dir.path / "x.off").string() +
-                " --blobbyness 0.5"),
+  EXPECT_EQ(molmesh::testing::run_cli("surface " + data + "/missing.pqr -o " +
+                                      (dir.path / "x.off").string())
+                .exit_code,
+            2);
+  EXPECT_EQ(molmesh::testing::run_cli("surface " + data + "/fas2.pqr -o " +
+                                      (dir.path / "x.off").string() + " --blobbyness 0.5")
+                .exit_code,
             2);
   const fs::path bad = dir.path / "bad.pqr";
   std::ofstream(bad) << "ATOM      1  N   ALA     1      nonsense\n";
-  EXPECT_EQ(run("surface " + bad.string() + " -o " + (dir.path / "x.off").string()), 3);
-  EXPECT_EQ(run("surface " + data + "/1a1p.pqr -o " + (dir.path / "x.unknown").string()), 2);
-  EXPECT_EQ(run("surface " + data + "/1a1p.pqr --raw -o " +
-                (dir.path / "no_such_dir" / "x.off").string()),
+  EXPECT_EQ(
+      molmesh::testing::run_cli("surface " + bad.string() + " -o " + (dir.path / "x.off").string())
+          .exit_code,
+      3);
+  EXPECT_EQ(molmesh::testing::run_cli("surface " + data + "/1a1p.pqr -o " +
+                                      (dir.path / "x.unknown").string())
+                .exit_code,
+            2);
+  EXPECT_EQ(molmesh::testing::run_cli("surface " + data + "/1a1p.pqr --raw -o " +
+                                      (dir.path / "no_such_dir" / "x.off").string())
+                .exit_code,
             4);
   EXPECT_FALSE(fs::exists(dir.path / "x.off"));
 }

@@ -21,13 +21,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// `molmesh ARGS`'s exit code, with stdout and stderr in *out.
-int run(const std::string& args, std::string* out = nullptr) {
-  const testing::CliRun r = testing::run_cli(args);
-  if (out) *out = r.output();
-  return r.exit_code;
-}
-
 struct TempDir {
   fs::path path = testing::test_dir();
   ~TempDir() { fs::remove_all(path); }
@@ -40,9 +33,11 @@ TEST(SurfaceKindCli, GaussianReproducesThePaperPipelineByteForByte) {
   const fs::path cli = dir.path / "cli.off", lib = dir.path / "lib.off";
   // Without the projection onto Eq. 1 (which a grid input has no atoms for), the Gaussian kind
   // is the paper's path.
-  ASSERT_EQ(run("-q surface " + k1a1p +
+  ASSERT_EQ(testing::run_cli(
+                "-q surface " + k1a1p +
                 " --surface gaussian --blobbyness -0.5 --isovalue 1 --no-keep-on-surface -o " +
-                cli.string()),
+                cli.string())
+                .exit_code,
             0);
   // The paper's path written out without the surface-kind dispatch: Eq. 1 on the grid, then
   // contouring and processing at the library's processing defaults.
@@ -64,12 +59,10 @@ TEST(SurfaceKindCli, DistanceSurfacesNestAndStatsSayWhichSurface) {
   const char* kinds[3] = {"vdw", "ses", "sas"};
   for (int k = 0; k < 3; ++k) {
     const fs::path json = dir.path / (std::string(kinds[k]) + ".json");
-    std::string out;
-    ASSERT_EQ(run("-q surface " + k1a1p + " --surface " + kinds[k] + " --probe-radius 1.4 -o " +
-                      (dir.path / "s.off").string() + " --stats " + json.string(),
-                  &out),
-              0)
-        << out;
+    const testing::CliRun surface = testing::run_cli(
+        "-q surface " + k1a1p + " --surface " + kinds[k] + " --probe-radius 1.4 -o " +
+        (dir.path / "s.off").string() + " --stats " + json.string());
+    ASSERT_EQ(surface.exit_code, 0) << surface.output();
     std::ifstream in(json);
     const nlohmann::json doc = nlohmann::json::parse(in);
     EXPECT_EQ(doc["parameters"]["surface"], kinds[k]);
@@ -80,14 +73,12 @@ TEST(SurfaceKindCli, DistanceSurfacesNestAndStatsSayWhichSurface) {
   }
   EXPECT_LT(volume[0], volume[1]);
   EXPECT_LT(volume[1], volume[2]);
-  std::string out;
-  EXPECT_EQ(
-      run("-q surface " + k1a1p + " --surface bogus -o " + (dir.path / "x.off").string(), &out), 2)
-      << out;
-  EXPECT_EQ(
-      run("-q surface " + k1a1p + " --probe-radius -1 -o " + (dir.path / "x.off").string(), &out),
-      2)
-      << out;
+  const testing::CliRun bogus = testing::run_cli("-q surface " + k1a1p + " --surface bogus -o " +
+                                                 (dir.path / "x.off").string());
+  EXPECT_EQ(bogus.exit_code, 2) << bogus.output();
+  const testing::CliRun negative = testing::run_cli(
+      "-q surface " + k1a1p + " --probe-radius -1 -o " + (dir.path / "x.off").string());
+  EXPECT_EQ(negative.exit_code, 2) << negative.output();
 }
 
 TEST(SurfaceKindCli, HierarchyTakesTheSharedOptionsAndInfoNamesTheSurface) {
@@ -95,17 +86,19 @@ TEST(SurfaceKindCli, HierarchyTakesTheSharedOptionsAndInfoNamesTheSurface) {
   const fs::path h5 = dir.path / "h.h5";
   const fs::path radii = dir.path / "radii.txt";
   testing::write_file(radii, "* 1.60\n");
-  std::string out;
-  ASSERT_EQ(run("-q hierarchy " + k1a1p + " --surface vdw --coarsen 0.3 --domain interior " +
-                    "--no-hetatm --radii " + radii.string() + " -o " + h5.string(),
-                &out),
-            0)
-      << out;
-  ASSERT_EQ(run("info " + h5.string(), &out), 0) << out;
+  const testing::CliRun hierarchy =
+      testing::run_cli("-q hierarchy " + k1a1p + " --surface vdw --coarsen 0.3 --domain interior " +
+                       "--no-hetatm --radii " + radii.string() + " -o " + h5.string());
+  ASSERT_EQ(hierarchy.exit_code, 0) << hierarchy.output();
+  const testing::CliRun info = testing::run_cli("info " + h5.string());
+  const std::string out = info.output();
+  ASSERT_EQ(info.exit_code, 0) << out;
   EXPECT_NE(out.find("surface: vdw"), std::string::npos) << out;
   EXPECT_NE(out.find("hetatm                     no"), std::string::npos) << out;
   EXPECT_NE(out.find("t0                         0.3"), std::string::npos) << out;
-  EXPECT_EQ(run("-q hierarchy " + k1a1p + " --raw -o " + h5.string(), &out), 2) << out;
+  const testing::CliRun raw =
+      testing::run_cli("-q hierarchy " + k1a1p + " --raw -o " + h5.string());
+  EXPECT_EQ(raw.exit_code, 2) << raw.output();
 }
 
 }  // namespace

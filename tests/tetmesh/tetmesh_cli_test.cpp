@@ -20,8 +20,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-int run(const std::string& args) { return testing::run_cli("-q " + args).exit_code; }
-
 TEST(CliTetmesh, SurfaceFileToEveryFormatWithStats) {
   const fs::path dir =
       fs::temp_directory_path() / ("molmesh_cli_tetmesh_" + std::to_string(::getpid()));
@@ -31,9 +29,11 @@ TEST(CliTetmesh, SurfaceFileToEveryFormatWithStats) {
   { std::ofstream(dir / "site.txt") << "1 1 4 1.6\n"; }
   for (const char* ext : {".m", ".vtu", ".msh", ".msh4"}) {
     const std::string out = (dir / (std::string("ion") + ext)).string();
-    ASSERT_EQ(run("tetmesh " + surf + " --domain exterior --outer-radius 15 --active-site " +
-                  (dir / "site.txt").string() + " -o " + out + " --stats " +
-                  (dir / "stats.json").string()),
+    ASSERT_EQ(testing::run_cli("-q tetmesh " + surf +
+                               " --domain exterior --outer-radius 15 --active-site " +
+                               (dir / "site.txt").string() + " -o " + out + " --stats " +
+                               (dir / "stats.json").string())
+                  .exit_code,
               0)
         << ext;
     EXPECT_GT(fs::file_size(out), 1000u);
@@ -50,11 +50,19 @@ TEST(CliTetmesh, SurfaceFileToEveryFormatWithStats) {
   const TetMesh back = read_mcsf(dir / "ion.m");
   EXPECT_EQ(back.tetrahedra.size(), j["tetrahedra"].get<std::size_t>());
 
-  EXPECT_EQ(run("tetmesh " + surf + " --outer-radius 15 -o " + (dir / "x.xyz").string()), 2);
+  EXPECT_EQ(
+      testing::run_cli("-q tetmesh " + surf + " --outer-radius 15 -o " + (dir / "x.xyz").string())
+          .exit_code,
+      2);
   EXPECT_FALSE(fs::exists(dir / "x.xyz"));
-  EXPECT_EQ(run("tetmesh " + surf + " --domain inside -o " + (dir / "x.m").string()), 2);
+  EXPECT_EQ(testing::run_cli("-q tetmesh " + surf + " --domain inside -o " + (dir / "x.m").string())
+                .exit_code,
+            2);
   // A single surface with no atoms but ratio sizing works; an enclosed-too-small sphere fails.
-  EXPECT_EQ(run("tetmesh " + surf + " --outer-radius 2 -o " + (dir / "y.m").string()), 1);
+  EXPECT_EQ(
+      testing::run_cli("-q tetmesh " + surf + " --outer-radius 2 -o " + (dir / "y.m").string())
+          .exit_code,
+      1);
   fs::remove_all(dir);
 }
 
