@@ -1,7 +1,6 @@
 // molmesh's MCSF files read by FETK's own MC reader (Gem_read, the code APBS and SMOL use),
 // checking counts, orientation, face types and materials as FETK sees them.
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <filesystem>
 #include <map>
@@ -11,6 +10,7 @@
 #include "molmesh/tetmesh/markers.hpp"
 #include "molmesh/tetmesh/outer_sphere.hpp"
 #include "molmesh/tetmesh/tetrahedralize.hpp"
+#include "support/files.hpp"
 
 namespace molmesh {
 namespace {
@@ -28,8 +28,8 @@ TEST(FetkReader, ReadsMolmeshFullMesh) {
   o.outer_radius = 20.0;
   o.active_site = {Sphere{Vec3(0, 0, 3), 1.6}};  // marks faces but they are interior here
   const TetMesh mesh = tetrahedralize(ion, one_atom(), o);
-  const auto path = std::filesystem::temp_directory_path() /
-                    ("molmesh_fetk_full_" + std::to_string(::getpid()) + ".m");
+  const auto dir = testing::test_dir();
+  const auto path = dir / "full.m";
   write_mcsf(path, mesh);
   FetkMesh fetk = read_with_fetk(path);
   EXPECT_TRUE(fetk.read_ok);
@@ -45,7 +45,7 @@ TEST(FetkReader, ReadsMolmeshFullMesh) {
   std::map<int, int> regions;
   for (int c : mesh.cell_markers) ++regions[c];
   EXPECT_EQ(fetk.materials, regions);
-  std::filesystem::remove(path);
+  std::filesystem::remove_all(dir);
 }
 
 TEST(FetkReader, ReadsMolmeshExteriorMeshWithActiveSite) {
@@ -57,8 +57,8 @@ TEST(FetkReader, ReadsMolmeshExteriorMeshWithActiveSite) {
   const TetMesh mesh = tetrahedralize(ion, one_atom(), o);
   std::map<int, int> per_marker;
   for (int m : mesh.boundary_face_markers) ++per_marker[m];
-  const auto path = std::filesystem::temp_directory_path() /
-                    ("molmesh_fetk_exterior_" + std::to_string(::getpid()) + ".m");
+  const auto dir = testing::test_dir();
+  const auto path = dir / "exterior.m";
   write_mcsf(path, mesh);
   FetkMesh fetk = read_with_fetk(path);
   EXPECT_TRUE(fetk.read_ok);
@@ -70,7 +70,7 @@ TEST(FetkReader, ReadsMolmeshExteriorMeshWithActiveSite) {
   EXPECT_EQ(fetk.boundary_face_types[5], per_marker[markers::kOuterSphere]);
   EXPECT_EQ(fetk.materials.size(), 1u);
   EXPECT_EQ(fetk.materials.begin()->first, markers::kSolventRegion);
-  std::filesystem::remove(path);
+  std::filesystem::remove_all(dir);
 }
 
 }  // namespace

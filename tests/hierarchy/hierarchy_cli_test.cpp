@@ -2,7 +2,6 @@
 // checked through the library reader, the transfer invariants, an independent python
 // reader and `molmesh info`.
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <cstdlib>
 #include <filesystem>
@@ -15,6 +14,7 @@
 #include "molmesh/tetmesh/markers.hpp"
 #include "molmesh/tetmesh/tet_stats.hpp"
 #include "support/cli.hpp"
+#include "support/files.hpp"
 
 namespace molmesh {
 namespace {
@@ -24,9 +24,7 @@ namespace fs = std::filesystem;
 class HierarchyCli : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    dir_ = fs::temp_directory_path() / ("molmesh_hierarchy_cli_" + std::to_string(::getpid()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
+    dir_ = testing::test_dir();
     input_ = fs::path(MOLMESH_TEST_DATA_DIR) / "fas2.pqr";
     const testing::CliRun run =
         testing::run_cli("hierarchy " + input_.string() +

@@ -2,7 +2,6 @@
 // floor requirements of the hierarchy (steadily falling level sizes, transfer invariants,
 // a file an independent reader accepts).
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <cstdlib>
 #include <filesystem>
@@ -12,6 +11,7 @@
 #include "molmesh/io/hierarchy_hdf5.hpp"
 #include "molmesh/tetmesh/tet_stats.hpp"
 #include "support/cli.hpp"
+#include "support/files.hpp"
 
 namespace molmesh {
 namespace {
@@ -19,10 +19,7 @@ namespace {
 namespace fs = std::filesystem;
 
 TEST(HierarchyMache, FourLevelsExterior) {
-  const auto dir =
-      fs::temp_directory_path() / ("molmesh_hierarchy_mache_" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const auto dir = testing::test_dir();
   const auto h5 = dir / "mache.h5";
   const testing::CliRun run =
       testing::run_cli("hierarchy " + (fs::path(MOLMESH_TEST_DATA_DIR) / "mache.pqr").string() +

@@ -13,6 +13,7 @@
 #include "molmesh/io/read_atoms.hpp"
 #include "molmesh/pipeline/surface_pipeline.hpp"
 #include "molmesh/tetmesh/tetrahedralize.hpp"
+#include "support/files.hpp"
 
 namespace molmesh {
 namespace {
@@ -76,8 +77,7 @@ TEST(ThreadIndependence, SurfaceTetmeshAndHierarchyAreIdenticalWithOneAndTwoThre
   }
   // Every HDF5 dataset: byte-identical files (the writer stores no object times, so this
   // holds across a clock-second boundary too).
-  const auto dir = fs::temp_directory_path() / ("molmesh_threads_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
+  const auto dir = testing::test_dir();
   write_hierarchy(dir / "one.h5", one.hierarchy);
   write_hierarchy(dir / "two.h5", two.hierarchy);
   EXPECT_EQ(bytes_of(dir / "one.h5"), bytes_of(dir / "two.h5"));

@@ -1,7 +1,6 @@
 // `molmesh export` on a real hierarchy, read back by independent readers (meshio, scipy,
 // a numpy parser of PETSc's binary format; check_export.py) and compared with the HDF5.
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <filesystem>
@@ -21,9 +20,7 @@ class ExportCli : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
     // Per process: ctest runs each test of the suite in its own process, in parallel.
-    dir_ = fs::temp_directory_path() / ("molmesh_export_cli_" + std::to_string(::getpid()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
+    dir_ = testing::test_dir();
     h5_ = dir_ / "fas2.h5";
     hierarchy_ =
         testing::run_cli("-q hierarchy " + (fs::path(MOLMESH_TEST_DATA_DIR) / "fas2.pqr").string() +

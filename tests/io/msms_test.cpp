@@ -3,7 +3,6 @@
 #include "molmesh/io/msms.hpp"
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -13,16 +12,10 @@
 #include "molmesh/io/read_atoms.hpp"
 #include "molmesh/surface/marching_cubes.hpp"
 #include "molmesh/volume/gaussian_blur.hpp"
+#include "support/files.hpp"
 
 namespace molmesh {
 namespace {
-
-std::filesystem::path scratch(const std::string& name) {
-  const auto dir = std::filesystem::temp_directory_path() /
-                   ("molmesh_inputs_msms_" + std::to_string(::getpid()));
-  std::filesystem::create_directories(dir);
-  return dir / name;
-}
 
 void write_text(const std::filesystem::path& p, const std::string& text) {
   std::ofstream(p) << text;
@@ -50,7 +43,7 @@ void write_tetrahedron(const std::filesystem::path& stem) {
 }
 
 TEST(Msms, ReadsTheMsmsLayout) {
-  const auto stem = scratch("tetra");
+  const auto stem = testing::test_dir() / "tetra";
   write_tetrahedron(stem);
   for (const auto& p : {stem, std::filesystem::path(stem.string() + ".vert"),
                         std::filesystem::path(stem.string() + ".face")}) {
@@ -69,7 +62,7 @@ TEST(Msms, ReadsTheMsmsLayout) {
 TEST(Msms, RoundTripsAMolecularSurface) {
   const Atoms atoms = read_atoms(MOLMESH_TEST_DATA_DIR "/1a1p.pqr");
   const SurfaceMesh m = marching_cubes(blur_atoms(atoms, BlurOptions{}), 1.0);
-  const auto stem = scratch("1a1p");
+  const auto stem = testing::test_dir() / "1a1p";
   write_msms(stem, m);
   const SurfaceMesh back = read_msms(stem.string() + ".face");
   ASSERT_EQ(back.points.size(), m.points.size());
@@ -81,7 +74,7 @@ TEST(Msms, RoundTripsAMolecularSurface) {
 }
 
 TEST(Msms, ErrorsNameTheFileAndLine) {
-  const auto stem = scratch("broken");
+  const auto stem = testing::test_dir() / "broken";
   write_tetrahedron(stem);
   write_text(stem.string() + ".face",
              "# faces\n#faces  #sphere density probe_r\n 2 1 3.00 1.50\n 1 2 3 1 1\n 1 2 9 1 1\n");
@@ -102,7 +95,7 @@ TEST(Msms, ErrorsNameTheFileAndLine) {
 // used to take the first field of its empty field list (fuzz input
 // tests/fuzz/crashes/msms/).
 TEST(Msms, FormFeedLinesAreBlank) {
-  const auto stem = scratch("formfeed");
+  const auto stem = testing::test_dir() / "formfeed";
   write_tetrahedron(stem);
   write_text(stem.string() + ".vert",
              "\f\v\n# vertices\n\f\n 4 1 3.00 1.50\n\v\n 0 0 0\n 1 0 0\n 0 1 0\n 0 0 1\n");

@@ -11,6 +11,7 @@
 #include "molmesh/io/surface_mesh_io.hpp"
 #include "molmesh/tetmesh/outer_sphere.hpp"
 #include "support/cli.hpp"
+#include "support/files.hpp"
 
 namespace molmesh {
 namespace {
@@ -18,12 +19,7 @@ namespace {
 namespace fs = std::filesystem;
 
 struct Scratch {
-  fs::path path =
-      fs::temp_directory_path() / ("molmesh_option_ranges_" + std::to_string(::getpid()));
-  Scratch() {
-    fs::remove_all(path);
-    fs::create_directories(path);
-  }
+  fs::path path = testing::test_dir();
   ~Scratch() { fs::remove_all(path); }
   std::string operator/(const std::string& name) const { return (path / name).string(); }
 };

@@ -11,14 +11,14 @@
 #include <string>
 
 #include "support/cli.hpp"
+#include "support/files.hpp"
 
 namespace {
 
 namespace fs = std::filesystem;
 
 struct TempDir {
-  fs::path path = fs::temp_directory_path() / ("molmesh_surface_cli_" + std::to_string(getpid()));
-  TempDir() { fs::create_directories(path); }
+  fs::path path = molmesh::testing::test_dir();
   ~TempDir() { fs::remove_all(path); }
 };
 

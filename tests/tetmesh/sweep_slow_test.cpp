@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "support/cli.hpp"
+#include "support/files.hpp"
 
 namespace molmesh {
 namespace {
@@ -39,8 +40,7 @@ struct Case {
 };
 
 TEST(TetgenSweep, TetmeshNeverDiesOfASignal) {
-  const auto dir = fs::temp_directory_path() / ("molmesh_sweep_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
+  const auto dir = testing::test_dir();
   const Case cases[] = {
       {"1a1p", {-0.3, -1.0, -2.0, -4.0}, {0.3, 0.6, 1.0}},
       {"fas2", {-0.3, -2.0, -4.0}, {0.6, 1.0}},
@@ -58,8 +58,7 @@ TEST(TetgenSweep, TetmeshNeverDiesOfASignal) {
 // Finding 2 named every domain: the fas2 case that crashed, at the default spacing, on the
 // interior and exterior domains too (the full one is CliTetmesh.Fas2AtBlobbyness2IsNoCrash).
 TEST(TetgenSweep, Fas2AtBlobbyness2MeshesInteriorAndExterior) {
-  const auto dir = fs::temp_directory_path() / ("molmesh_sweep_d_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
+  const auto dir = testing::test_dir();
   for (const char* domain : {"interior", "exterior"}) {
     const std::string command = "-q tetmesh " + std::string(MOLMESH_TEST_DATA_DIR) +
                                 "/fas2.pqr --blobbyness -2 --domain " + domain + " -o " +
@@ -73,8 +72,7 @@ TEST(TetgenSweep, Fas2AtBlobbyness2MeshesInteriorAndExterior) {
 }
 
 TEST(TetgenSweep, HierarchyNeverDiesOfASignal) {
-  const auto dir = fs::temp_directory_path() / ("molmesh_sweep_h_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
+  const auto dir = testing::test_dir();
   const Case cases[] = {
       {"1a1p", {-0.3, -4.0}, {0.3, 1.0}},
       {"fas2", {-2.0}, {0.5}},
@@ -93,8 +91,7 @@ TEST(TetgenSweep, HierarchyNeverDiesOfASignal) {
 // every domain exited 1. The last poor triangles' collapse (processing/poor_triangle_collapse)
 // removes the crossing; the surface is the same for every domain, so the cheapest one runs.
 TEST(TetgenSweep, MacheAtBlobbyness2OnA06Grid_HierarchyMeshesEveryLevel) {
-  const auto dir = fs::temp_directory_path() / ("molmesh_sweep_m_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
+  const auto dir = testing::test_dir();
   const std::string command = "-q hierarchy " + std::string(MOLMESH_TEST_DATA_DIR) +
                               "/mache.pqr --blobbyness -2 --spacing 0.6 --domain interior "
                               "--t0 0.2,0.4 -o " +

@@ -2,7 +2,6 @@
 // a bad output name rejected with exit code 2 before any work, and fas2 at B = -2 (where
 // TetGen once crashed) meshed or refused cleanly.
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <cstdlib>
 #include <filesystem>
@@ -14,6 +13,7 @@
 #include "molmesh/io/surface_mesh_io.hpp"
 #include "molmesh/tetmesh/outer_sphere.hpp"
 #include "support/cli.hpp"
+#include "support/files.hpp"
 
 namespace molmesh {
 namespace {
@@ -21,9 +21,7 @@ namespace {
 namespace fs = std::filesystem;
 
 TEST(CliTetmesh, SurfaceFileToEveryFormatWithStats) {
-  const fs::path dir =
-      fs::temp_directory_path() / ("molmesh_cli_tetmesh_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
+  const fs::path dir = testing::test_dir();
   const std::string surf = (dir / "ion.off").string();
   write_surface_mesh(surf, icosphere(Vec3(1, 1, 1), 3.0, 2));
   { std::ofstream(dir / "site.txt") << "1 1 4 1.6\n"; }
@@ -68,9 +66,7 @@ TEST(CliTetmesh, SurfaceFileToEveryFormatWithStats) {
 
 TEST(CliTetmesh, Fas2AtBlobbyness2IsNoCrash) {
   // Issue 18's reproducer: TetGen died with SIGSEGV (double free in its cleanup).
-  const auto dir = std::filesystem::temp_directory_path() /
-                   ("molmesh_tetgen_fas2_" + std::to_string(::getpid()));
-  std::filesystem::create_directories(dir);
+  const auto dir = testing::test_dir();
   const auto r =
       testing::run_cli("-q " + std::string("tetmesh ") + MOLMESH_TEST_DATA_DIR +
                        "/fas2.pqr --blobbyness -2 --domain full -o " + (dir / "f.m").string());

@@ -2,7 +2,6 @@
 // (F = 1 exactly at r = R), `molmesh hierarchy` meshes it with TetGen, `molmesh solve`
 // solves on the hierarchy with multigrid.
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <cstdio>
 #include <cstdlib>
@@ -13,17 +12,11 @@
 #include <utility>
 
 #include "support/cli.hpp"
+#include "support/files.hpp"
 
 namespace {
 
 namespace fs = std::filesystem;
-
-fs::path work_dir() {
-  const fs::path dir =
-      fs::temp_directory_path() / ("molmesh_solver_pipeline_test_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  return dir;
-}
 
 void write_ion(const fs::path& path, double radius,
                const char* position = "0.000   0.000   0.000") {
@@ -41,7 +34,7 @@ nlohmann::json run(const std::string& args, const fs::path& json) {
 // Issue 16's accuracy floor: both analytic cases within 1 % with the default options of
 // `molmesh hierarchy` and `molmesh solve` (the size field of tetmesh/size_field.hpp).
 TEST(SolverPipeline, AbsorbingSphereWithinOnePercentAtTheDefaults) {
-  const fs::path dir = work_dir();
+  const fs::path dir = molmesh::testing::test_dir();
   write_ion(dir / "sphere10.pqr", 10.0);
   const fs::path h5 = dir / "sphere10.h5";
   ASSERT_EQ(molmesh::testing::run_cli("-q hierarchy " + (dir / "sphere10.pqr").string() + " -o " +
@@ -67,7 +60,7 @@ TEST(SolverPipeline, AbsorbingSphereWithinOnePercentAtTheDefaults) {
 // At the origin and moved by tenths of an Å against the grid: one position alone can be
 // lucky (the surface ratio 1.5 gave +0.55 % at the origin and up to +2.1 % elsewhere).
 TEST(SolverPipeline, BornIonWithinOnePercentAtTheDefaults) {
-  const fs::path dir = work_dir();
+  const fs::path dir = molmesh::testing::test_dir();
   int case_number = 0;
   for (const char* position : {"0.000   0.000   0.000", "0.100   0.200   0.300",
                                "0.250   0.050   0.130", "0.370   0.410   0.020"}) {
@@ -92,7 +85,7 @@ TEST(SolverPipeline, BornIonWithinOnePercentAtTheDefaults) {
 }
 
 TEST(SolverPipeline, BornIonFromTheTetGenHierarchy) {
-  const fs::path dir = work_dir();
+  const fs::path dir = molmesh::testing::test_dir();
   write_ion(dir / "born3.pqr", 3.0);
   const fs::path h5 = dir / "born3.h5";
   ASSERT_EQ(molmesh::testing::run_cli(
@@ -115,7 +108,7 @@ TEST(SolverPipeline, BornIonFromTheTetGenHierarchy) {
 // default --surface-size-ratio 1.5 molmesh is +17 % / +15 % off; 0.6 resolves the
 // dielectric boundary enough (docs/tetmesh.md, "Size field").
 TEST(SolverPipeline, ProteinSolvationEnergyWithinFivePercentOfApbs) {
-  const fs::path dir = work_dir();
+  const fs::path dir = molmesh::testing::test_dir();
   const std::string pqr = std::string(MOLMESH_TEST_DATA_DIR) + "/1a1p.pqr";
   for (const auto& [surface, apbs] : {std::pair{"ses", -568.91}, std::pair{"vdw", -701.53}}) {
     const fs::path h5 = dir / (std::string(surface) + ".h5");
