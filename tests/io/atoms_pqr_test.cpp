@@ -232,13 +232,13 @@ TEST(Pqr, NonNumbersAmongTheValuesAreRefusedNeverShifted) {
 TEST(Pqr, FileLevelErrors) {
   expect_input_error([] { read_atoms(test::write_text("empty.pqr", "REMARK only\nEND\n")); },
                      {"empty.pqr", "no ATOM or HETATM records"});
-  expect_input_error([] { read_atoms(test::scratch_dir() / "missing.pqr"); },
+  expect_input_error([] { read_atoms(testing::test_dir() / "missing.pqr"); },
                      {"missing.pqr", "no such file"});
   expect_input_error([] { read_atoms(test::write_text("atoms.xyz", "1\n")); },
                      {"atoms.xyz", "unknown molecule format '.xyz'"});
   expect_input_error(
       [] {
-        const auto folder = test::scratch_dir() / "folder.pqr";
+        const auto folder = testing::test_dir() / "folder.pqr";
         std::filesystem::create_directories(folder);
         read_atoms(folder);
       },

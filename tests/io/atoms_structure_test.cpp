@@ -210,8 +210,8 @@ TEST(Structure, MmcifAndGzipGiveTheSameAtoms) {
     EXPECT_DOUBLE_EQ(cif[i].radius, pdb[i].radius);
     EXPECT_LT((cif[i].center - pdb[i].center).norm(), 1e-9);
   }
-  const std::string text = test::slurp(kData / "1a1p.pdb");
-  const auto gz = test::scratch_dir() / "1a1p.pdb.gz";
+  const std::string text = testing::slurp(kData / "1a1p.pdb");
+  const auto gz = testing::test_dir() / "1a1p.pdb.gz";
   gzFile out = gzopen(gz.string().c_str(), "wb");
   ASSERT_NE(out, nullptr);
   ASSERT_EQ(gzwrite(out, text.data(), static_cast<unsigned>(text.size())),
@@ -360,12 +360,12 @@ TEST(Structure, MmcifAssemblyOperatorRangesAreBounded) {
 }
 
 TEST(Structure, TruncatedGzipIsAnInputError) {
-  const std::string text = test::slurp(kData / "1a1p.pdb");
-  const auto gz = test::scratch_dir() / "cut.pdb.gz";
+  const std::string text = testing::slurp(kData / "1a1p.pdb");
+  const auto gz = testing::test_dir() / "cut.pdb.gz";
   gzFile out = gzopen(gz.string().c_str(), "wb");
   gzwrite(out, text.data(), static_cast<unsigned>(text.size()));
   gzclose(out);
-  std::string bytes = test::slurp(gz);
+  std::string bytes = testing::slurp(gz);
   bytes.resize(bytes.size() / 2);
   write_text("cut.pdb.gz", bytes);
   expect_input_error([&] { read_atoms(gz); }, {"cut.pdb.gz", "gzip"});

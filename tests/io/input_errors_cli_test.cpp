@@ -19,7 +19,7 @@ using testing::run_cli;
 TEST(CliInputErrors, MalformedPqrExitsWithCode3AndTheLine) {
   const auto pqr = test::write_text(
       "bad.pqr", "REMARK\nATOM 1 N ALA 1 0 0 0 0 1.8\nATOM 2 C ALA 1 0 0 0 0 -1\n");
-  const auto out = test::scratch_dir() / "out.off";
+  const auto out = testing::test_dir() / "out.off";
   const CliRun run = run_cli("surface " + pqr.string() + " -o " + out.string());
   EXPECT_EQ(run.exit_code, 3) << run.err;
   EXPECT_NE(run.err.find("molmesh: error: " + pqr.string() + ":3: negative radius -1"),
@@ -32,7 +32,7 @@ TEST(CliInputErrors, BadRadiusTableAndUnknownElement) {
   const auto pdb = test::write_text(
       "fe.pdb",
       "HETATM    1 FE   HEM A 200      10.000  10.000  10.000  1.00  0.00          FE  \n");
-  const auto out = (test::scratch_dir() / "out.off").string();
+  const auto out = (testing::test_dir() / "out.off").string();
   CliRun run = run_cli("surface " + pdb.string() + " -o " + out);
   EXPECT_EQ(run.exit_code, 3) << run.err;
   EXPECT_NE(run.err.find(pdb.string() + ":1:"), std::string::npos) << run.err;
@@ -46,7 +46,7 @@ TEST(CliInputErrors, BadRadiusTableAndUnknownElement) {
 // Issue 18: inputs that were accepted (exit 0 with a misread atom), crashed (SIGSEGV) or
 // allocated gigabytes are exit 3 with file:line.
 TEST(CliInputErrors, NonNumbersOverflowsAndNonFiniteValuesExitWithCode3) {
-  const auto out = test::scratch_dir() / "out.off";
+  const auto out = testing::test_dir() / "out.off";
   const auto pqr = test::write_text("r.pqr", "ATOM 1 C ALA 1 abc 0 0 0 1.5\n");
   CliRun run = run_cli("surface " + pqr.string() + " -o " + out.string());
   EXPECT_EQ(run.exit_code, 3) << run.err;
@@ -69,8 +69,7 @@ TEST(CliInputErrors, NonNumbersOverflowsAndNonFiniteValuesExitWithCode3) {
   const auto map = test::write_text("big.mrc", mrc);
   run = run_cli("surface " + map.string() + " --isovalue 0.5 -o " + out.string());
   EXPECT_EQ(run.exit_code, 3) << run.err;
-  EXPECT_NE(run.err.find(map.string() + ": file has"), std::string::npos)
-      << run.err;
+  EXPECT_NE(run.err.find(map.string() + ": file has"), std::string::npos) << run.err;
 
   const auto dx = test::write_text(
       "nan.dx",
@@ -79,8 +78,7 @@ TEST(CliInputErrors, NonNumbersOverflowsAndNonFiniteValuesExitWithCode3) {
       "nan nan nan\nnan nan nan\nnan nan\n");
   run = run_cli("surface " + dx.string() + " --isovalue 0.5 -o " + out.string());
   EXPECT_EQ(run.exit_code, 3) << run.err;
-  EXPECT_NE(run.err.find(dx.string() + ":7: value 'nan' is not a finite number"),
-            std::string::npos)
+  EXPECT_NE(run.err.find(dx.string() + ":7: value 'nan' is not a finite number"), std::string::npos)
       << run.err;
   EXPECT_FALSE(std::filesystem::exists(out));
 }

@@ -26,7 +26,7 @@ namespace {
 const char* kPython = "/usr/bin/python3";
 
 std::string run_python(const std::string& script) {
-  const auto dir = test::scratch_dir();
+  const auto dir = testing::test_dir();
   const auto script_path = dir / "script.py";
   std::ofstream(script_path) << script;
   const testing::CommandRun run = testing::run_command(std::string(kPython) + " " +
@@ -62,7 +62,7 @@ TEST(Interop, MeshioReadsOurSurfaceFiles) {
   for (const Vec3& p : mesh.points) sum += p.x() + 2 * p.y() + 3 * p.z();
   std::string files;
   for (const char* ext : {"off", "ply", "obj", "stl"}) {
-    const auto path = test::scratch_dir() / (std::string("torus.") + ext);
+    const auto path = testing::test_dir() / (std::string("torus.") + ext);
     write_surface_mesh(path, mesh);
     files.append("'").append(path.string()).append("',");
   }
@@ -91,7 +91,7 @@ TEST(Interop, MeshioReadsOurSurfaceFiles) {
 }
 
 TEST(Interop, WeReadMeshioSurfaceFiles) {
-  const auto dir = test::scratch_dir();
+  const auto dir = testing::test_dir();
   run_python(
       "import meshio, numpy as np\n"
       "pts = np.array([[0,0,0],[1,0,0],[0,1,0],[0,0,1]], dtype=float) * 1.25 + 0.5\n"
@@ -124,7 +124,7 @@ TEST(Interop, GemmiReadsOurMrc) {
   g.values.resize(g.size());
   for (std::size_t i = 0; i < g.values.size(); ++i)
     g.values[i] = std::sin(0.37 * static_cast<double>(i));
-  const auto path = test::scratch_dir() / "g.mrc";
+  const auto path = testing::test_dir() / "g.mrc";
   write_volume(path, g);
   gemmi::Ccp4<float> map;
   map.read_ccp4_file(path.string());
@@ -146,7 +146,7 @@ TEST(Interop, WeReadApbsPotentialMaps) {
   // centred at the origin and writes the potential as OpenDX. The grid is symmetric in y
   // and z, the ion is not at the centre in x: a reader that got the z-fastest value order
   // wrong would put the maximum elsewhere and break the symmetries.
-  const auto dir = test::scratch_dir();
+  const auto dir = testing::test_dir();
   std::ofstream(dir / "ion.pqr")
       << "ATOM      1  I   ION     1       3.000   0.000  0.000  1.00  2.00\n";
   std::ofstream(dir / "apbs.in")

@@ -1,5 +1,5 @@
 #pragma once
-// Helpers for the io tests: scratch files in a per-test temporary folder.
+// Helpers for the io tests: scratch files in the per-test folder of support/files.hpp.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -7,26 +7,13 @@
 #include <string>
 
 #include "molmesh/core/error.hpp"
+#include "support/files.hpp"
 
 namespace molmesh::test {
 
-inline std::filesystem::path scratch_dir() {
-  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-  auto dir = std::filesystem::temp_directory_path() /
-             ("molmesh_io_" + std::string(info->test_suite_name()) + "_" + info->name());
-  std::filesystem::create_directories(dir);
-  return dir;
-}
-
+// `text` written to `file_name` in the running test's scratch folder (testing::test_dir).
 inline std::filesystem::path write_text(const std::string& file_name, const std::string& text) {
-  const auto path = scratch_dir() / file_name;
-  std::ofstream(path, std::ios::binary) << text;
-  return path;
-}
-
-inline std::string slurp(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  return testing::write_file(testing::test_dir() / file_name, text);
 }
 
 // Runs f, expects an InputError whose message contains every fragment.

@@ -52,7 +52,7 @@ std::map<int, std::size_t> count(const std::vector<int>& v) {
 
 TEST(Mcsf, RoundTripKeepsMeshAndBoundaryMarkers) {
   const TetMesh mesh = exterior_ion_mesh();
-  const auto path = test::scratch_dir() / "ext.m";
+  const auto path = testing::test_dir() / "ext.m";
   write_mcsf(path, mesh);
   const TetMesh back = read_mcsf(path);
   ASSERT_EQ(back.points.size(), mesh.points.size());
@@ -68,7 +68,7 @@ TEST(Mcsf, RoundTripKeepsMeshAndBoundaryMarkers) {
 
 TEST(Mcsf, FullMeshMolecularSurfaceIsInteriorFaceType) {
   const TetMesh mesh = full_ion_mesh();
-  const auto path = test::scratch_dir() / "full.m";
+  const auto path = testing::test_dir() / "full.m";
   write_volume_mesh(path, mesh);
   const TetMesh back = read_volume_mesh(path);
   // Only the outer sphere is a boundary in MCSF terms; materials are the regions.
@@ -78,7 +78,7 @@ TEST(Mcsf, FullMeshMolecularSurfaceIsInteriorFaceType) {
   EXPECT_EQ(faces.begin()->second, icosphere(Vec3::Zero(), 12.0, 2).triangles.size());
   EXPECT_EQ(count(back.cell_markers), count(mesh.cell_markers));
   EXPECT_EQ(count(back.cell_markers).size(), 2u);
-  const std::string text = test::slurp(path);
+  const std::string text = testing::slurp(path);
   EXPECT_EQ(text.find("mcsf_begin=1;"), text.find("mcsf_begin"));
   EXPECT_NE(text.find("mcsf_end=1;"), std::string::npos);
 }
@@ -147,14 +147,14 @@ TEST(Mcsf, FaceTypesArePerFaceAndIndependentOfTheThreadCount) {
     mesh.boundary_face_markers.push_back(m);
   }
   const McsfFaceTypes types;
-  const auto path = test::scratch_dir() / "kuhn.m";
+  const auto path = testing::test_dir() / "kuhn.m";
   {
     tbb::global_control one(tbb::global_control::max_allowed_parallelism, 1);
     write_mcsf(path, mesh, types);
   }
-  const std::string serial = test::slurp(path);
+  const std::string serial = testing::slurp(path);
   write_mcsf(path, mesh, types);
-  EXPECT_EQ(test::slurp(path), serial);
+  EXPECT_EQ(testing::slurp(path), serial);
 
   std::istringstream in(serial.substr(serial.find("simp=[")));
   std::string line;
@@ -219,13 +219,13 @@ TEST(Mcsf, MalformedFilesGiveFileAndLine) {
   bad_number.replace(bad_number.find("1 0 1 0 0"), 9, "1 0 1 x 0");
   test::expect_input_error([&] { read_mcsf(test::write_text("n.m", bad_number)); },
                            {"n.m:8:", "coordinate"});
-  test::expect_input_error([&] { read_mcsf(test::scratch_dir() / "missing.m"); }, {"missing.m"});
-  EXPECT_THROW(write_volume_mesh(test::scratch_dir() / "x.xyz", full_ion_mesh()), Error);
+  test::expect_input_error([&] { read_mcsf(testing::test_dir() / "missing.m"); }, {"missing.m"});
+  EXPECT_THROW(write_volume_mesh(testing::test_dir() / "x.xyz", full_ion_mesh()), Error);
 }
 
 TEST(VolumeMeshIo, MeshioReadsVtuAndGmshWithRegionsAndMarkers) {
   const TetMesh mesh = full_ion_mesh();
-  const auto dir = test::scratch_dir();
+  const auto dir = testing::test_dir();
   std::vector<double> radius;
   for (const auto& p : mesh.points) radius.push_back(p.norm());
   write_volume_mesh(dir / "full.vtu", mesh, {{"radius", radius}});

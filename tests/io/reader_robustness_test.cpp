@@ -154,7 +154,7 @@ TEST(ReaderRobustness, NonFiniteValuesAreErrorsInEveryReader) {
   // MSMS vertices: "nan" was taken as a coordinate.
   write_text("m.vert", "# v\n3 0 0 0\nnan 0 0\n1 0 0\n0 1 0\n");
   write_text("m.face", "# f\n1 0 0 0\n1 2 3\n");
-  expect_input_error([&] { read_msms(test::scratch_dir() / "m.vert"); },
+  expect_input_error([&] { read_msms(testing::test_dir() / "m.vert"); },
                      {"m.vert:3:", "'nan' is not a finite number"});
   expect_input_error([] { parse_off("OFF\n3 1 0\n0 0 0\n1 inf 0\n0 1 0\n3 0 1 2\n", "n.off"); },
                      {"n.off:4:", "'inf'"});

@@ -36,7 +36,7 @@ TEST(SphereList, Errors) {
                      {"d.txt:1:", "finite"});
   expect_input_error([] { read_spheres(write_text("e.txt", "# none\n\n")); },
                      {"e.txt", "no spheres"});
-  expect_input_error([] { read_spheres(test::scratch_dir() / "f.txt"); },
+  expect_input_error([] { read_spheres(testing::test_dir() / "f.txt"); },
                      {"f.txt", "no such file"});
 }
 

@@ -63,7 +63,7 @@ void expect_same_geometry(const SurfaceMesh& a, const SurfaceMesh& b, double tol
 TEST(SurfaceMeshIo, ExactRoundTrips) {
   const SurfaceMesh mesh = sphere_mesh();
   for (const char* file : {"m.off", "m.obj", "m.ply"}) {
-    const auto path = test::scratch_dir() / file;
+    const auto path = testing::test_dir() / file;
     write_surface_mesh(path, mesh);
     const SurfaceMesh back = read_surface_mesh(path);
     expect_same_geometry(mesh, back, 0.0);
@@ -76,7 +76,7 @@ TEST(SurfaceMeshIo, ExactRoundTrips) {
 
 TEST(SurfaceMeshIo, StlRoundTripRestoresConnectivity) {
   const SurfaceMesh mesh = sphere_mesh();
-  const auto path = test::scratch_dir() / "m.stl";
+  const auto path = testing::test_dir() / "m.stl";
   write_surface_mesh(path, mesh);
   EXPECT_EQ(std::filesystem::file_size(path), 84 + 50 * mesh.triangles.size());
   const SurfaceMesh back = read_surface_mesh(path);
@@ -249,13 +249,13 @@ TEST(SurfaceMeshIo, MalformedFilesNameTheLine) {
       {"c.stl:3:", "vertex x y z"});
   expect_input_error([] { read_surface_mesh(write_text("mesh.vtk", "")); },
                      {"mesh.vtk", "unknown surface mesh format"});
-  expect_input_error([] { read_surface_mesh(test::scratch_dir() / "absent.off"); },
+  expect_input_error([] { read_surface_mesh(testing::test_dir() / "absent.off"); },
                      {"absent.off", "no such file"});
 }
 
 TEST(SurfaceMeshIo, WriterRefusesInconsistentMeshesAndKeepsOldFile) {
   SurfaceMesh bad = sphere_mesh();
-  const auto path = test::scratch_dir() / "keep.ply";
+  const auto path = testing::test_dir() / "keep.ply";
   write_surface_mesh(path, bad);
   const auto size = std::filesystem::file_size(path);
   bad.face_markers.pop_back();
@@ -263,7 +263,7 @@ TEST(SurfaceMeshIo, WriterRefusesInconsistentMeshesAndKeepsOldFile) {
   bad = sphere_mesh();
   bad.triangles[0][1] = 100000;
   EXPECT_THROW(write_surface_mesh(path, bad), OutputError);
-  EXPECT_THROW(write_surface_mesh(test::scratch_dir() / "x.vtk", sphere_mesh()), OutputError);
+  EXPECT_THROW(write_surface_mesh(testing::test_dir() / "x.vtk", sphere_mesh()), OutputError);
   EXPECT_EQ(std::filesystem::file_size(path), size);
 }
 

@@ -53,10 +53,10 @@ void expect_same(const Grid& a, const Grid& b, double tolerance) {
 
 TEST(VolumeIo, DxRoundTripIsExact) {
   const Grid g = sample_grid(false);
-  const auto path = test::scratch_dir() / "g.dx";
+  const auto path = testing::test_dir() / "g.dx";
   write_volume(path, g);
   expect_same(g, read_volume(path), 0.0);
-  const std::string text = test::slurp(path);
+  const std::string text = testing::slurp(path);
   EXPECT_NE(text.find("object 1 class gridpositions counts 5 4 3\n"), std::string::npos);
   EXPECT_NE(text.find("object 3 class array type double rank 0 items 60 data follows\n"),
             std::string::npos);
@@ -92,7 +92,7 @@ TEST(VolumeIo, DxValuesAreZFastest) {
 TEST(VolumeIo, MrcRoundTripKeepsGeometryAndFloats) {
   const Grid g = sample_grid(true);
   for (const char* file : {"g.mrc", "g.map", "g.ccp4"}) {
-    const auto path = test::scratch_dir() / file;
+    const auto path = testing::test_dir() / file;
     write_volume(path, g);
     EXPECT_EQ(std::filesystem::file_size(path), 1024 + 4 * g.size());
     expect_same(g, read_volume(path), 1e-6);
@@ -199,7 +199,7 @@ TEST(VolumeIo, MalformedVolumesAreInputErrors) {
       {"e.mrc", "voxel size"});
   expect_input_error([&] { read_volume(write_text("v.vtk", "")); },
                      {"v.vtk", "unknown volume format"});
-  expect_input_error([&] { read_volume(test::scratch_dir() / "none.dx"); },
+  expect_input_error([&] { read_volume(testing::test_dir() / "none.dx"); },
                      {"none.dx", "no such file"});
 }
 
@@ -363,9 +363,9 @@ TEST(VolumeIo, DxHoldsOneGrid) {
 TEST(VolumeIo, WriterRejectsInconsistentGrids) {
   Grid g = sample_grid(false);
   g.values.pop_back();
-  EXPECT_THROW(write_volume(test::scratch_dir() / "bad.dx", g), OutputError);
-  EXPECT_THROW(write_volume(test::scratch_dir() / "bad.vol", sample_grid(false)), OutputError);
-  EXPECT_FALSE(std::filesystem::exists(test::scratch_dir() / "bad.dx"));
+  EXPECT_THROW(write_volume(testing::test_dir() / "bad.dx", g), OutputError);
+  EXPECT_THROW(write_volume(testing::test_dir() / "bad.vol", sample_grid(false)), OutputError);
+  EXPECT_FALSE(std::filesystem::exists(testing::test_dir() / "bad.dx"));
 }
 
 }  // namespace
