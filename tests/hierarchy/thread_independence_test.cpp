@@ -4,8 +4,6 @@
 #include <tbb/global_control.h>
 
 #include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <string>
 
 #include "molmesh/hierarchy/build_hierarchy.hpp"
@@ -39,11 +37,6 @@ Outputs run_with(int threads) {
   options.t0 = {0.2, 0.4};
   r.hierarchy = build_hierarchy(surface_from_atoms(atoms, raw).surface, atoms, options);
   return r;
-}
-
-std::string bytes_of(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), {});
 }
 
 TEST(ThreadIndependence, SurfaceTetmeshAndHierarchyAreIdenticalWithOneAndTwoThreads) {
@@ -80,7 +73,7 @@ TEST(ThreadIndependence, SurfaceTetmeshAndHierarchyAreIdenticalWithOneAndTwoThre
   const auto dir = testing::test_dir();
   write_hierarchy(dir / "one.h5", one.hierarchy);
   write_hierarchy(dir / "two.h5", two.hierarchy);
-  EXPECT_EQ(bytes_of(dir / "one.h5"), bytes_of(dir / "two.h5"));
+  EXPECT_EQ(testing::slurp(dir / "one.h5"), testing::slurp(dir / "two.h5"));
   fs::remove_all(dir);
 }
 
