@@ -18,6 +18,7 @@ const molmesh::SurfaceMesh& mache_raw() {
     const molmesh::Atoms atoms =
         molmesh::read_atoms(std::string(MOLMESH_TEST_DATA_DIR) + "/mache.pqr");
     molmesh::SurfacePipelineOptions options;
+    options.surface = molmesh::SurfaceKind::kGaussian;  // the paper's, as the recorded numbers
     options.raw = true;
     return molmesh::surface_from_atoms(atoms, options).raw;
   }();

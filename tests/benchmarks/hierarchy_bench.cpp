@@ -29,6 +29,7 @@ const Meshes& meshes() {
   static const Meshes m = [] {
     const auto atoms = read_atoms(std::filesystem::path(MOLMESH_TEST_DATA_DIR) / "fas2.pqr");
     SurfacePipelineOptions surface_options;
+    surface_options.surface = SurfaceKind::kGaussian;  // the paper's, as the recorded numbers
     surface_options.raw = true;
     const auto raw = surface_from_atoms(atoms, surface_options).surface;
     ProcessingOptions processing;

@@ -101,7 +101,7 @@ def main():
                 [*surface, assemblies[120], "--spacing", "1.0", "-o", w / "mache120.off"],
                 args.runs_1m, rows)
     measure("hierarchy mache --domain exterior",
-            [molmesh, "hierarchy", "-q", MACHE, "--domain", "exterior", "-o", w / "mache.h5"],
+            [molmesh, "hierarchy", "-q", *kind, MACHE, "--domain", "exterior", "-o", w / "mache.h5"],
             args.runs, rows)
     measure("tetmesh mache --domain full (incl. MCSF write)",
             [molmesh, "tetmesh", "-q", *kind, MACHE, "--domain", "full", "-o", w / "mache.m"],

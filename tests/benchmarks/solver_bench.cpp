@@ -58,6 +58,7 @@ const Hierarchy& mache() {
   static const Hierarchy h = [] {
     const auto atoms = read_atoms(std::filesystem::path(MOLMESH_TEST_DATA_DIR) / "mache.pqr");
     SurfacePipelineOptions surface_options;
+    surface_options.surface = SurfaceKind::kGaussian;  // the paper's, as the recorded numbers
     surface_options.raw = true;
     const auto raw = surface_from_atoms(atoms, surface_options).surface;
     HierarchyOptions options;

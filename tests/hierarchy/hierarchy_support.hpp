@@ -93,10 +93,11 @@ inline long check_volume_transfer(const SparseMatrix& p, const TetMesh& coarse, 
       EXPECT_LE(position_error, max_projection) << "fine vertex " << i;
       continue;
     }
-    // Inside: the linear function a.x + 4 is reproduced to 1e-9 relative.
+    // Inside: the linear function a.x + 4 is reproduced to 1e-9 relative. A position error
+    // just under 1e-9 * scale moves a.x by up to |a| times that, hence |a| * scale.
     const double exact = xf.row(i).dot(a) + 4.0;
     const double got = interpolated.row(i).dot(a) + 4.0;
-    EXPECT_NEAR(got, exact, 1e-9 * std::max(1.0, std::abs(exact) + scale));
+    EXPECT_NEAR(got, exact, 1e-9 * (a.norm() * scale + std::max(1.0, std::abs(exact))));
   }
   EXPECT_LE(static_cast<double>(outside), max_outside_fraction * static_cast<double>(xf.rows()))
       << "fine vertices outside the coarse mesh";

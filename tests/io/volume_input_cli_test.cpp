@@ -45,6 +45,7 @@ nlohmann::json read_json(const fs::path& p) {
 TEST(VolumeInput, WrittenBlurContoursLikeTheAtomsPath) {
   const Atoms atoms = read_atoms(MOLMESH_TEST_DATA_DIR "/1a1p.pqr");
   SurfacePipelineOptions options;
+  options.surface = SurfaceKind::kGaussian;  // contoured at isovalue 1, as the volume is below
   options.raw = true;
   options.keep_volume = true;
   const SurfacePipelineResult direct = surface_from_atoms(atoms, options);
@@ -139,10 +140,10 @@ TEST(VolumeInput, SurfaceCommandWritesAndRecontoursItsVolumeAndBlursFast) {
   const fs::path c = testing::test_dir() / "cli_fast.off";
   const fs::path cs = testing::test_dir() / "cli_fast.json";
   std::string err;
-  ASSERT_EQ(
-      molmesh("surface " + pqr + " --raw -o " + a.string() + " --write-volume " + vol.string(),
-              &err),
-      0)
+  ASSERT_EQ(molmesh("surface " + pqr + " --surface gaussian --raw -o " + a.string() +
+                        " --write-volume " + vol.string(),
+                    &err),
+            0)
       << err;
   ASSERT_EQ(molmesh("surface " + vol.string() + " --raw --isovalue 1 -o " + b.string(), &err), 0)
       << err;
@@ -151,10 +152,10 @@ TEST(VolumeInput, SurfaceCommandWritesAndRecontoursItsVolumeAndBlursFast) {
   EXPECT_EQ(sa.points.size(), sb.points.size());
   EXPECT_LT(measure_dislocation(sb, sa).max, 1e-4);
 
-  ASSERT_EQ(
-      molmesh("surface " + pqr + " --raw --blur fast -o " + c.string() + " --stats " + cs.string(),
-              &err),
-      0)
+  ASSERT_EQ(molmesh("surface " + pqr + " --surface gaussian --raw --blur fast -o " + c.string() +
+                        " --stats " + cs.string(),
+                    &err),
+            0)
       << err;
   const nlohmann::json j = read_json(cs);
   EXPECT_EQ(j["parameters"]["blur"].get<std::string>(), "fast");

@@ -26,11 +26,11 @@ TEST(SurfaceCli, WritesMeshAndStatsJson) {
   TempDir dir;
   const fs::path off = dir.path / "fas2.off";
   const fs::path json = dir.path / "fas2.json";
-  ASSERT_EQ(
-      molmesh::testing::run_cli("-q surface " + std::string(MOLMESH_TEST_DATA_DIR) +
-                                "/fas2.pqr -o " + off.string() + " --raw --stats " + json.string())
-          .exit_code,
-      0);
+  ASSERT_EQ(molmesh::testing::run_cli("-q surface " + std::string(MOLMESH_TEST_DATA_DIR) +
+                                      "/fas2.pqr --surface gaussian -o " + off.string() +
+                                      " --raw --stats " + json.string())
+                .exit_code,
+            0);
   ASSERT_TRUE(fs::exists(off));
   std::ifstream in(json);
   const nlohmann::json doc = nlohmann::json::parse(in);
@@ -127,9 +127,9 @@ TEST(SurfaceCli, WarnsWhenTheProcessedSurfaceHasDegenerateAngles) {
   const std::string fas2 = std::string(MOLMESH_TEST_DATA_DIR) + "/fas2.pqr";
   const fs::path json = dir.path / "poor.json";
   // B = -4 on a 1 A grid: features finer than the grid (0.21 to 171.5 degrees).
-  const auto poor =
-      molmesh::testing::run_cli("-q surface " + fas2 + " --blobbyness -4 --spacing 1.0 -o " +
-                                (dir.path / "poor.off").string() + " --stats " + json.string());
+  const auto poor = molmesh::testing::run_cli(
+      "-q surface " + fas2 + " --surface gaussian --blobbyness -4 --spacing 1.0 -o " +
+      (dir.path / "poor.off").string() + " --stats " + json.string());
   ASSERT_EQ(poor.exit_code, 0) << poor.err;
   EXPECT_NE(poor.err.find("warning: the processed surface has angles from"), std::string::npos)
       << poor.err;
@@ -138,8 +138,9 @@ TEST(SurfaceCli, WarnsWhenTheProcessedSurfaceHasDegenerateAngles) {
   const nlohmann::json doc = nlohmann::json::parse(in);
   EXPECT_LT(doc["min_angle_deg"].get<double>(), 5.0);
 
-  const auto good = molmesh::testing::run_cli("-q surface " + fas2 + " --spacing 1.0 -o " +
-                                              (dir.path / "good.off").string());
+  const auto good =
+      molmesh::testing::run_cli("-q surface " + fas2 + " --surface gaussian --spacing 1.0 -o " +
+                                (dir.path / "good.off").string());
   ASSERT_EQ(good.exit_code, 0) << good.err;
   EXPECT_EQ(good.err.find("warning"), std::string::npos) << good.err;
 }

@@ -17,6 +17,7 @@ namespace {
 TEST(SurfaceMache, ClosedManifoldOutwardAllAtomsInsideDeterministic) {
   const Atoms atoms = read_atoms(std::string(MOLMESH_TEST_DATA_DIR) + "/mache.pqr");
   SurfacePipelineOptions options;
+  options.surface = SurfaceKind::kGaussian;  // GAMer 1's surface, for its node count
   options.raw = true;
   SurfacePipelineResult one, two;
   {
@@ -47,12 +48,14 @@ TEST(SurfaceMache, ClosedManifoldOutwardAllAtomsInsideDeterministic) {
   EXPECT_EQ(outside, 0);
 }
 
-// Issue 13's floors on the paper's molecule with the defaults: angles (min ≥ 30°, max ≤ 112°,
-// ≥ 93 % in [40°, 80°]), no more than 18k vertices, the raw volume within 0.5 %, vertices on
-// Eq. 1's level set.
-TEST(SurfaceMache, DefaultSurfaceReachesTheQualityFloors) {
+// Issue 13's floors on the paper's molecule and surface (the Gaussian, B = -0.5, isovalue 1):
+// angles (min ≥ 30°, max ≤ 112°, ≥ 93 % in [40°, 80°]), no more than 18k vertices, the raw volume
+// within 0.5 %, vertices on Eq. 1's level set.
+TEST(SurfaceMache, PaperGaussianSurfaceReachesTheQualityFloors) {
   const Atoms atoms = read_atoms(std::string(MOLMESH_TEST_DATA_DIR) + "/mache.pqr");
-  const SurfacePipelineResult r = surface_from_atoms(atoms, {});
+  SurfacePipelineOptions options;
+  options.surface = SurfaceKind::kGaussian;
+  const SurfacePipelineResult r = surface_from_atoms(atoms, options);
   const SurfaceStats s = compute_surface_stats(r.surface);
   EXPECT_GE(s.min_angle_deg, 30.0);
   EXPECT_LE(s.max_angle_deg, 112.0);
@@ -70,12 +73,11 @@ TEST(SurfaceMache, DefaultSurfaceReachesTheQualityFloors) {
 // max <= 115°, >= 91 % in [40°, 80°]) on the SES (1.4 Å probe) of mAChE, where one 122°
 // triangle on a 93° crease was left until the last poor triangles were collapsed
 // (processing/poor_triangle_collapse.hpp); closed, manifold, no self-intersection, the raw
-// topology and volume.
+// topology and volume. The SES is the default surface.
 TEST(SurfaceMache, SesSurfaceReachesTheQualityFloors) {
   const Atoms atoms = read_atoms(std::string(MOLMESH_TEST_DATA_DIR) + "/mache.pqr");
-  SurfacePipelineOptions options;
-  options.surface = SurfaceKind::kSes;
-  const SurfacePipelineResult r = surface_from_atoms(atoms, options);
+  const SurfacePipelineResult r = surface_from_atoms(atoms, {});
+  ASSERT_EQ(SurfacePipelineOptions{}.surface, SurfaceKind::kSes);
   const SurfaceStats s = compute_surface_stats(r.surface);
   EXPECT_GE(s.min_angle_deg, 27.0);
   EXPECT_LE(s.max_angle_deg, 115.0);

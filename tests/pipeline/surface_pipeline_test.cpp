@@ -22,6 +22,7 @@ namespace {
 void check_molecule(const std::string& name, std::size_t min_vertices) {
   const Atoms atoms = read_atoms(std::string(MOLMESH_TEST_DATA_DIR) + "/" + name);
   SurfacePipelineOptions options;
+  options.surface = SurfaceKind::kGaussian;  // the paper's surface (the default is ses)
   options.raw = true;
   const SurfacePipelineResult result = surface_from_atoms(atoms, options);
   ASSERT_FALSE(result.stages.empty());
@@ -71,6 +72,7 @@ TEST(SurfacePipeline, VolumeInputSkipsBlur) {
   a.radius = 1.5;
   const Grid grid = blur_atoms({a}, {});
   SurfacePipelineOptions raw_only;
+  raw_only.surface = SurfaceKind::kGaussian;  // the paper's surface (the default is ses)
   raw_only.raw = true;
   const SurfacePipelineResult r = surface_from_grid(grid, raw_only);
   ASSERT_EQ(r.stages.size(), 1u);
@@ -78,7 +80,7 @@ TEST(SurfacePipeline, VolumeInputSkipsBlur) {
   EXPECT_EQ(r.stages[0].stats->euler_characteristic, 2);
 }
 
-// A volume input keeps its vertices on the volume's trilinear level set only when asked.
+// A volume input keeps its vertices on the volume's (tricubic) level set only when asked.
 TEST(SurfacePipeline, VolumeInputProjectsOntoItsLevelSetWhenAsked) {
   const Atoms atoms = read_atoms(std::string(MOLMESH_TEST_DATA_DIR) + "/1a1p.pqr");
   const Grid grid = blur_atoms(atoms, {});
@@ -86,12 +88,13 @@ TEST(SurfacePipeline, VolumeInputProjectsOntoItsLevelSetWhenAsked) {
     double worst = 0;
     for (const Vec3& p : mesh.points) {
       Vec3 g;
-      const double f = trilinear_value(grid, p, &g) - 1.0;
+      const double f = tricubic_value(grid, p, &g) - 1.0;
       worst = std::max(worst, std::abs(f) / g.norm());
     }
     return worst;
   };
   SurfacePipelineOptions options;
+  options.surface = SurfaceKind::kGaussian;  // the paper's surface (the default is ses)
   const SurfacePipelineResult plain = surface_from_grid(grid, options);
   EXPECT_FALSE(plain.projection);
   EXPECT_GT(worst_distance(plain.surface), 0.05);
@@ -105,7 +108,8 @@ TEST(SurfacePipeline, EmptyIsosurfaceIsAnError) {
   Atom a;
   a.radius = 1.5;
   SurfacePipelineOptions options;
-  options.isovalue = 50.0;  // far above the peak exp(0.5) of a lone atom
+  options.surface = SurfaceKind::kGaussian;  // the paper's surface (the default is ses)
+  options.isovalue = 50.0;                   // far above the peak exp(0.5) of a lone atom
   EXPECT_THROW(surface_from_atoms({a}, options), Error);
 }
 
@@ -117,6 +121,7 @@ TEST(SurfacePipeline, LoneAtomStaysOnItsSphere) {
   atom.radius = 2.0;
   const Atoms atoms{atom};
   SurfacePipelineOptions options;
+  options.surface = SurfaceKind::kGaussian;  // the paper's surface (the default is ses)
   const SurfacePipelineResult result = surface_from_atoms(atoms, options);
   ASSERT_GT(result.surface.points.size(), 50u);
   double worst = 0;
@@ -136,6 +141,7 @@ TEST(SurfacePipeline, TwoAtomBlobKeepsItsTips) {
   left.radius = right.radius = 1.6;
   const Atoms atoms{left, right};
   SurfacePipelineOptions options;
+  options.surface = SurfaceKind::kGaussian;  // the paper's surface (the default is ses)
   const SurfacePipelineResult result = surface_from_atoms(atoms, options);
   ASSERT_TRUE(result.level_set_distance.has_value());
   EXPECT_LT(result.level_set_distance->vertex_max, 1e-3);
@@ -172,6 +178,7 @@ namespace {
 TEST(SurfacePipeline, LevelSetDistanceOfTheGaussianSurface) {
   const Atoms atoms = read_atoms(std::string(MOLMESH_TEST_DATA_DIR) + "/1a1p.pqr");
   SurfacePipelineOptions options;
+  options.surface = SurfaceKind::kGaussian;  // the paper's surface (the default is ses)
   options.raw = true;
   const SurfacePipelineResult raw = surface_from_atoms(atoms, options);
   ASSERT_TRUE(raw.level_set_distance.has_value());
@@ -210,7 +217,34 @@ TEST(SurfacePipeline, LevelSetDistanceOfTheGaussianSurface) {
   EXPECT_FALSE(surface_from_atoms(atoms, options).level_set_distance.has_value());
   options.measure = true;
   options.surface = SurfaceKind::kVdw;
+  options.blur_method = BlurMethod::kExact;  // the Gaussian-only options keep their defaults
   EXPECT_FALSE(surface_from_atoms(atoms, options).level_set_distance.has_value());
+}
+
+// The default surface is the SES; a Gaussian-only option changed with it is refused, not
+// silently ignored (docs/surface.md "Which surface").
+TEST(SurfacePipeline, GaussianOnlyOptionsAreRefusedForOtherSurfaces) {
+  EXPECT_EQ(SurfacePipelineOptions{}.surface, SurfaceKind::kSes);
+  const auto refused = [](const SurfacePipelineOptions& options) {
+    try {
+      options.validate(SurfaceInput::kAtoms);
+    } catch (const OptionError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  EXPECT_EQ(refused(SurfacePipelineOptions{}), "");
+  SurfacePipelineOptions blobby;
+  blobby.blur.blobbyness = -2.0;
+  EXPECT_NE(refused(blobby).find("`blobbyness` applies only to the Gaussian surface"),
+            std::string::npos);
+  blobby.surface = SurfaceKind::kGaussian;
+  EXPECT_EQ(refused(blobby), "");
+  SurfacePipelineOptions level;
+  level.surface = SurfaceKind::kVdw;
+  level.isovalue = 2.0;
+  EXPECT_NE(refused(level).find("`isovalue`"), std::string::npos);
+  EXPECT_NO_THROW(level.validate(SurfaceInput::kVolume));  // a volume's level is its own
 }
 
 }  // namespace

@@ -40,8 +40,8 @@ def test_per_atom_blobbyness_changes_the_surface(fas2_atoms):
     n = len(fas2_atoms)
     blobby = molmesh.Atoms(fas2_atoms.positions, fas2_atoms.radii, blobbyness=np.full(n, -2.0))
     assert (blobby.blobbyness == -2.0).all()
-    a = molmesh.surface(fas2_atoms, raw=True, spacing=1.0).stats()
-    b = molmesh.surface(blobby, raw=True, spacing=1.0).stats()
+    a = molmesh.surface(fas2_atoms, surface="gaussian", raw=True, spacing=1.0).stats()
+    b = molmesh.surface(blobby, surface="gaussian", raw=True, spacing=1.0).stats()
     assert b["area"] != a["area"]
 
 

@@ -33,7 +33,8 @@ def test_default_surface_is_the_clis_bit_for_bit(fas2_surface, fas2_cli_surface)
     assert [s["name"] for s in surf.report["stages"]] == [s["name"] for s in cli_stats["stages"]]
     assert [s["stats"] for s in surf.report["stages"]] == [s["stats"] for s in cli_stats["stages"]]
     assert surf.report["dislocation_max"] == cli_stats["dislocation_max"]
-    assert surf.report["levelset_distance_max"] == cli_stats["levelset_distance_max"]
+    # Only the Gaussian reports its distance to Eq. 1's level set; the default SES has none.
+    assert "levelset_distance_max" not in surf.report and "levelset_distance_max" not in cli_stats
 
 
 def test_unmeasured_surface_is_the_same_without_stage_stats(fas2_surface, fas2_atoms):
@@ -74,15 +75,17 @@ def test_parameters_are_the_clis(fas2_surface, fas2_cli_surface):
     (one writer: pipeline/parameters_json.hpp): keep_on_surface resolved, the atom selection."""
     _, cli_stats = fas2_cli_surface
     assert fas2_surface.report["parameters"] == cli_stats["parameters"]
-    assert fas2_surface.report["parameters"]["keep_on_surface"] is True
+    # The default surface is the SES, whose processing moves stay off its level set.
+    assert fas2_surface.report["parameters"]["surface"] == "ses"
+    assert fas2_surface.report["parameters"]["keep_on_surface"] is False
     assert fas2_surface.report["parameters"]["hetatm"] is True
 
 
 def test_options_map_to_cli_flags(tmp_path, fas2_atoms):
     run_cli("surface", DATA / "fas2.pqr", "-o", tmp_path / "s.ply", "--spacing", "0.8",
-            "--blobbyness", "-0.7", "--coarsen", "0.2,0.3", "--rings", "3", "--beta", "1.5",
+            "--surface", "gaussian", "--blobbyness", "-0.7", "--coarsen", "0.2,0.3", "--rings", "3", "--beta", "1.5",
             "--blur", "fast", "--no-keep-on-surface", "--stats", tmp_path / "s.json")
-    surf = molmesh.surface(fas2_atoms, spacing=0.8, blobbyness=-0.7, coarsen=[0.2, 0.3],
+    surf = molmesh.surface(fas2_atoms, spacing=0.8, surface="gaussian", blobbyness=-0.7, coarsen=[0.2, 0.3],
                            rings=3, beta=1.5, blur="fast", keep_on_surface=False)
     assert_same_mesh(surf, molmesh.read_surface(tmp_path / "s.ply"))
     assert surf.report["parameters"]["coarsen"] == [0.2, 0.3]
@@ -100,7 +103,10 @@ def test_ses_surface_is_the_clis_bit_for_bit(tmp_path):
     assert kept.report["parameters"]["keep_on_surface"] is True
     assert kept.stats()["min_angle_deg"] != surf.stats()["min_angle_deg"]
     # Not the Gaussian surface of the same atoms.
-    assert surf.vertices.shape != molmesh.surface(atoms).vertices.shape
+    assert surf.vertices.shape != molmesh.surface(atoms, surface="gaussian").vertices.shape
+    # The Gaussian's own options are refused for another surface, the default SES too.
+    with pytest.raises(molmesh.OptionError, match="`blobbyness` applies only to the Gaussian"):
+        molmesh.surface(atoms, blobbyness=-2.0)
     with pytest.raises(ValueError, match="surface='sphere': expected one of"):
         molmesh.surface(atoms, surface="sphere")
     with pytest.raises(molmesh.OptionError, match="`probe_radius`"):
@@ -123,7 +129,7 @@ def test_keep_spheres_as_file_or_array(tmp_path, fas2_atoms):
 
 
 def test_volume_round_trip_and_contouring(tmp_path, fas2_atoms):
-    surf = molmesh.surface(fas2_atoms, raw=True, spacing=1.0, keep_volume=True)
+    surf = molmesh.surface(fas2_atoms, surface="gaussian", raw=True, spacing=1.0, keep_volume=True)
     volume = surf.report["volume"]
     assert volume.values.shape == tuple(surf.report["grid_dims"])
     # values[i, j, k] sits at origin + (i, j, k) * spacing; the field is > 1 inside atoms.
@@ -189,7 +195,7 @@ def test_progress_is_reported_per_stage(fas2_atoms):
     calls = []
     molmesh.surface(fas2_atoms, spacing=1.0, progress=lambda stage, f: calls.append((stage, f)))
     stages = [s for s, _ in calls]
-    for name in ["blur", "marching cubes", "improve", "coarsen", "smooth"]:
+    for name in ["distance field", "marching cubes", "improve", "coarsen", "smooth"]:
         assert name in stages
     assert all(0.0 <= f <= 1.0 for _, f in calls)
 

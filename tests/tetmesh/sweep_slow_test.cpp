@@ -50,8 +50,9 @@ TEST(TetgenSweep, TetmeshNeverDiesOfASignal) {
     for (double b : c.blobbyness)
       for (double h : c.spacing)
         expect_clean_end("tetmesh " + std::string(MOLMESH_TEST_DATA_DIR) + "/" + c.molecule +
-                         ".pqr --blobbyness " + std::to_string(b) + " --spacing " +
-                         std::to_string(h) + " --domain full -o " + (dir / "m.m").string());
+                         ".pqr --surface gaussian --blobbyness " + std::to_string(b) +
+                         " --spacing " + std::to_string(h) + " --domain full -o " +
+                         (dir / "m.m").string());
   fs::remove_all(dir);
 }
 
@@ -61,8 +62,8 @@ TEST(TetgenSweep, Fas2AtBlobbyness2MeshesInteriorAndExterior) {
   const auto dir = testing::test_dir();
   for (const char* domain : {"interior", "exterior"}) {
     const std::string command = "-q tetmesh " + std::string(MOLMESH_TEST_DATA_DIR) +
-                                "/fas2.pqr --blobbyness -2 --domain " + domain + " -o " +
-                                (dir / "m.m").string();
+                                "/fas2.pqr --surface gaussian --blobbyness -2 --domain " + domain +
+                                " -o " + (dir / "m.m").string();
     const auto r = testing::run_cli(command);
     EXPECT_EQ(r.signal, 0) << command << "\n" << r.err;
     EXPECT_EQ(r.exit_code, 0) << command << "\n" << r.err;
@@ -81,8 +82,9 @@ TEST(TetgenSweep, HierarchyNeverDiesOfASignal) {
     for (double b : c.blobbyness)
       for (double h : c.spacing)
         expect_clean_end("hierarchy " + std::string(MOLMESH_TEST_DATA_DIR) + "/" + c.molecule +
-                         ".pqr --blobbyness " + std::to_string(b) + " --spacing " +
-                         std::to_string(h) + " --t0 0.2,0.4 -o " + (dir / "h.h5").string());
+                         ".pqr --surface gaussian --blobbyness " + std::to_string(b) +
+                         " --spacing " + std::to_string(h) + " --t0 0.2,0.4 -o " +
+                         (dir / "h.h5").string());
   fs::remove_all(dir);
 }
 
@@ -92,10 +94,11 @@ TEST(TetgenSweep, HierarchyNeverDiesOfASignal) {
 // removes the crossing; the surface is the same for every domain, so the cheapest one runs.
 TEST(TetgenSweep, MacheAtBlobbyness2OnA06Grid_HierarchyMeshesEveryLevel) {
   const auto dir = testing::test_dir();
-  const std::string command = "-q hierarchy " + std::string(MOLMESH_TEST_DATA_DIR) +
-                              "/mache.pqr --blobbyness -2 --spacing 0.6 --domain interior "
-                              "--t0 0.2,0.4 -o " +
-                              (dir / "h.h5").string();
+  const std::string command =
+      "-q hierarchy " + std::string(MOLMESH_TEST_DATA_DIR) +
+      "/mache.pqr --surface gaussian --blobbyness -2 --spacing 0.6 --domain interior "
+      "--t0 0.2,0.4 -o " +
+      (dir / "h.h5").string();
   const auto r = testing::run_cli(command);
   EXPECT_EQ(r.signal, 0) << command << "\n" << r.err;
   EXPECT_EQ(r.exit_code, 0) << command << "\n" << r.err;

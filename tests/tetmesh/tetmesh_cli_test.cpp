@@ -67,9 +67,9 @@ TEST(CliTetmesh, SurfaceFileToEveryFormatWithStats) {
 TEST(CliTetmesh, Fas2AtBlobbyness2IsNoCrash) {
   // Issue 18's reproducer: TetGen died with SIGSEGV (double free in its cleanup).
   const auto dir = testing::test_dir();
-  const auto r =
-      testing::run_cli("-q " + std::string("tetmesh ") + MOLMESH_TEST_DATA_DIR +
-                       "/fas2.pqr --blobbyness -2 --domain full -o " + (dir / "f.m").string());
+  const auto r = testing::run_cli("-q " + std::string("tetmesh ") + MOLMESH_TEST_DATA_DIR +
+                                  "/fas2.pqr --surface gaussian --blobbyness -2 --domain full -o " +
+                                  (dir / "f.m").string());
   EXPECT_EQ(r.signal, 0) << r.err;
   EXPECT_TRUE(r.exit_code == 0 || r.exit_code == 1) << r.exit_code << " " << r.err;
   if (r.exit_code != 0) {

@@ -1,4 +1,5 @@
-// `molmesh surface`: atoms -> Gaussian volume -> marching cubes -> (processed) surface mesh.
+// `molmesh surface`: atoms -> volume (SES distance field by default, or --surface
+// sas|vdw|gaussian) -> marching cubes -> (processed) surface mesh.
 #include <chrono>
 #include <filesystem>
 #include <optional>
@@ -99,8 +100,9 @@ const CommandRegistration registration{
       auto args = std::make_shared<SurfaceArgs>();
       auto* cmd = app.add_subcommand(
           "surface",
-          "Molecular surface mesh from atoms: Gaussian blurring (GAMer Eq. 1), marching cubes, "
-          "then surface processing unless --raw. A scalar volume (.dx, .mrc, .map) is contoured "
+          "Molecular surface mesh from atoms: the solvent-excluded surface (or --surface "
+          "sas|vdw|gaussian, the last GAMer's Eq. 1) sampled on a grid, marching cubes, then "
+          "surface processing unless --raw. A scalar volume (.dx, .mrc, .map) is contoured "
           "at --isovalue instead of blurring atoms.");
       cmd->add_option(
              "INPUT", args->input,

@@ -153,11 +153,37 @@ void SurfacePipelineOptions::validate(SurfaceInput input) const {
     throw OptionError("`isovalue` must be a finite number (got " + std::to_string(isovalue) + ")");
   }
   check_range(specs.min_cavity_volume, min_cavity_volume);
+  if (input == SurfaceInput::kAtoms) require_gaussian_options_apply(*this);
   processing.validate();
+}
+
+void require_gaussian_options_apply(const SurfacePipelineOptions& options) {
+  if (options.surface == SurfaceKind::kGaussian) return;
+  // Changed from the defaults means asked for: a Gaussian parameter given with another surface
+  // would be silently ignored, and the user would mesh a surface they did not mean (the
+  // default became ses, so `--blobbyness -2` alone used to mean a Gaussian surface).
+  const SurfacePipelineOptions defaults;
+  const SurfaceOptionSpecs& specs = kSurfaceOptionSpecs;
+  const auto refuse = [&](std::string_view member) {
+    throw OptionError(
+        "`" + std::string(member) + "` applies only to the Gaussian surface, not to " +
+        std::string(surface_kind_name(options.surface)) +
+        ": set `surface` to gaussian to mesh the paper's blurred density, or leave `" +
+        std::string(member) + "` out for the " + std::string(surface_kind_name(options.surface)) +
+        " (docs/surface.md)");
+  };
+  if (options.blur.blobbyness != defaults.blur.blobbyness) refuse(specs.blobbyness.member);
+  if (options.isovalue != defaults.isovalue) refuse(specs.isovalue.member);
+  if (options.blur.truncation != defaults.blur.truncation) refuse(specs.truncation.member);
+  if (options.blur_method != defaults.blur_method) refuse(specs.blur.member);
 }
 
 bool keeps_on_surface(const SurfacePipelineOptions& options) {
   return options.keep_on_surface.value_or(options.surface == SurfaceKind::kGaussian);
+}
+
+bool settles_on_surface(const SurfacePipelineOptions& options) {
+  return !options.keep_on_surface.has_value() && options.surface != SurfaceKind::kGaussian;
 }
 
 bool volume_keeps_on_surface(const SurfacePipelineOptions& options) {
@@ -229,6 +255,7 @@ SurfacePipelineResult surface_from_atoms(const Atoms& atoms, const SurfacePipeli
                              p, kLevelSetMaxStep, kLevelSetTolerance);
     };
   }
+  if (settles_on_surface(options)) local_options.processing.settle = local_projection;
   extract_and_process(*grid, level_of(options), local_options, local_projection, reporter, result,
                       centre);
   if (options.measure && field) {

@@ -29,10 +29,13 @@ namespace molmesh {
 enum class SurfaceInput { kAtoms, kVolume };
 
 struct SurfacePipelineOptions {
-  // Which surface of the atoms: the paper's Gaussian (blur, isovalue below) or the vdW,
-  // solvent-accessible or solvent-excluded surface (distance fields sampled every
-  // blur.spacing and contoured at 0; blobbyness and isovalue do not apply). docs/surface.md.
-  SurfaceKind surface = SurfaceKind::kGaussian;
+  // Which surface of the atoms: the solvent-excluded surface (the default: the dielectric and
+  // reactive boundary PB and Smoluchowski users expect), the vdW or solvent-accessible one
+  // (distance fields sampled every blur.spacing and contoured at 0), or the paper's Gaussian
+  // (blur, isovalue below). The Gaussian-only options (blur.blobbyness, blur.truncation,
+  // isovalue, blur_method) must keep their defaults for the others: validate() refuses them,
+  // rather than ignore what a user asked for. docs/surface.md "Which surface".
+  SurfaceKind surface = SurfaceKind::kSes;
   double probe_radius = 1.4;  // Å, solvent probe of the sas and ses surfaces (water)
   // Project vertices back onto the surface after every processing move
   // (ProcessingOptions::project): onto the distance field's trilinear level set for vdw/sas/ses,
@@ -98,6 +101,14 @@ Grid surface_volume(const Atoms& atoms, const SurfacePipelineOptions& options,
                     const Reporter& reporter = {});
 // options.keep_on_surface, or the kind's default when it is unset.
 bool keeps_on_surface(const SurfacePipelineOptions& options);
+// Throws OptionError naming the option when a Gaussian-only option (blur.blobbyness, isovalue,
+// blur.truncation, blur_method) differs from its default while `surface` is not kGaussian.
+// validate(SurfaceInput::kAtoms) calls it, after the ranges.
+void require_gaussian_options_apply(const SurfacePipelineOptions& options);
+// Whether processing settles the vertices onto the surface once at the end instead
+// (ProcessingOptions::settle): for the distance-field surfaces of atoms when keep_on_surface is
+// unset, so the mesh is not left inside the surface by smoothing.
+bool settles_on_surface(const SurfacePipelineOptions& options);
 // The same for a volume input (surface_from_grid): only when options.keep_on_surface is true.
 bool volume_keeps_on_surface(const SurfacePipelineOptions& options);
 

@@ -95,6 +95,11 @@ ProcessingResult process_surface(const SurfaceMesh& input, const ProcessingOptio
       return Vec3(project(p + centre) - centre);
     };
   }
+  if (options.settle) {
+    local_options.settle = [settle = options.settle, centre](const Vec3& p) {
+      return Vec3(settle(p + centre) - centre);
+    };
+  }
   ProcessingResult result = process_centred(local, local_options, reporter);
   for (Vec3& p : result.mesh.points) p += centre;
   return result;
@@ -184,6 +189,11 @@ ProcessingResult process_centred(const SurfaceMesh& input, const ProcessingOptio
   for (int round = 0; round < options.cleanup_rounds; ++round) {
     improve_and_flip(" cleanup " + std::to_string(round + 1), improve.sweeps,
                      options.cleanup_worklist);
+  }
+  if (options.settle && !options.project) {
+    timer.run("settle", [&] {
+      project_vertices_keeping_angles(result.mesh, options.settle, options.settle_floor_deg);
+    });
   }
   // What the cleanup left outside the floors, mostly tiny triangles on creases, is collapsed
   // last, so the edit stays local: a mesh inside the floors is not touched (and only with

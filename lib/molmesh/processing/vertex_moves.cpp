@@ -30,18 +30,23 @@ std::vector<std::vector<std::int32_t>> colour_classes(const VertexAdjacency& nei
   return classes;
 }
 
-double triangle_quality_cos(const Vec3& a, const Vec3& b, const Vec3& c) {
+AngleCosines triangle_angle_cosines(const Vec3& a, const Vec3& b, const Vec3& c) {
   const Vec3 ab = b - a, bc = c - b, ca = a - c;
   const double lab2 = ab.squaredNorm(), lbc2 = bc.squaredNorm(), lca2 = ca.squaredNorm();
-  if (!(lab2 > 0 && lbc2 > 0 && lca2 > 0)) return 1.0;
+  if (!(lab2 > 0 && lbc2 > 0 && lca2 > 0)) return {1.0, 1.0};
   const double ca_ = -ca.dot(ab) / std::sqrt(lca2 * lab2);  // cosine of the angle at a
   const double cb = -ab.dot(bc) / std::sqrt(lab2 * lbc2);   // at b
   const double cc = -bc.dot(ca) / std::sqrt(lbc2 * lca2);   // at c
-  const double cos_small = std::clamp(std::max({ca_, cb, cc}), -1.0, 1.0);
-  const double cos_large = std::clamp(std::min({ca_, cb, cc}), -1.0, 1.0);
+  return {std::clamp(std::max({ca_, cb, cc}), -1.0, 1.0),
+          std::clamp(std::min({ca_, cb, cc}), -1.0, 1.0)};
+}
+
+double triangle_quality_cos(const Vec3& a, const Vec3& b, const Vec3& c) {
+  const AngleCosines cosines = triangle_angle_cosines(a, b, c);
+  if (cosines.largest == 1.0) return 1.0;  // degenerate
   // (180° - θmax)/2 has cosine sqrt((1 - cos θmax)/2) (half-angle formula), so the quality
   // min(θmin, (180° - θmax)/2) is the arccosine of the larger of the two cosines.
-  return std::max(cos_small, std::sqrt(0.5 * (1.0 - cos_large)));
+  return std::max(cosines.smallest, std::sqrt(0.5 * (1.0 - cosines.largest)));
 }
 
 double triangle_quality_deg(const Vec3& a, const Vec3& b, const Vec3& c) {

@@ -25,6 +25,13 @@ std::vector<std::vector<std::int32_t>> colour_classes(const VertexAdjacency& nei
 double triangle_quality_deg(const Vec3& a, const Vec3& b, const Vec3& c);
 // The cosine of that quality (smaller is better), computed without inverse trigonometry.
 double triangle_quality_cos(const Vec3& a, const Vec3& b, const Vec3& c);
+// Cosines of a triangle's smallest and largest angles, clamped to [-1, 1] (both 1 for a
+// degenerate triangle, which then has the worst quality).
+struct AngleCosines {
+  double smallest = -1.0;  // the largest cosine: of the smallest angle
+  double largest = 1.0;    // the smallest cosine: of the largest angle
+};
+AngleCosines triangle_angle_cosines(const Vec3& a, const Vec3& b, const Vec3& c);
 
 // Worst quality over the fan (x, ring[i], ring[i+1]).
 double star_quality_deg(const Vec3& x, std::span<const std::int32_t> ring,

@@ -34,6 +34,59 @@ double trilinear_value(const Grid& grid, const Vec3& p, Vec3* gradient) {
   return v0 + z * (v1 - v0);
 }
 
+namespace {
+
+// Catmull-Rom weights of the samples at -1, 0, 1, 2 for a point at t in [0, 1], and their
+// derivatives in t. The cubic reproduces quadratics, so a smooth field's level set is placed
+// to O(h^3), where the trilinear one sits O(h^2 / radius) inside every convex part (0.013 Å
+// on a 3 Å sphere at h = 0.5).
+void catmull_rom(double t, double w[4], double dw[4]) {
+  const double t2 = t * t, t3 = t2 * t;
+  w[0] = 0.5 * (-t3 + 2.0 * t2 - t);
+  w[1] = 0.5 * (3.0 * t3 - 5.0 * t2 + 2.0);
+  w[2] = 0.5 * (-3.0 * t3 + 4.0 * t2 + t);
+  w[3] = 0.5 * (t3 - t2);
+  dw[0] = 0.5 * (-3.0 * t2 + 4.0 * t - 1.0);
+  dw[1] = 0.5 * (9.0 * t2 - 10.0 * t);
+  dw[2] = 0.5 * (-9.0 * t2 + 8.0 * t + 1.0);
+  dw[3] = 0.5 * (3.0 * t2 - 2.0 * t);
+}
+
+}  // namespace
+
+double tricubic_value(const Grid& grid, const Vec3& p, Vec3* gradient) {
+  // Grids thinner than 4 samples along an axis have no cubic: the trilinear value.
+  if (std::min({grid.dims[0], grid.dims[1], grid.dims[2]}) < 4)
+    return trilinear_value(grid, p, gradient);
+  int index[3][4];
+  double w[3][4], dw[3][4];
+  for (int a = 0; a < 3; ++a) {
+    const double u = (p[a] - grid.origin[a]) / grid.spacing[a];
+    const int c = std::clamp(static_cast<int>(std::floor(u)), 0, grid.dims[a] - 2);
+    catmull_rom(std::clamp(u - c, 0.0, 1.0), w[a], dw[a]);
+    // At the grid's faces the outer samples repeat the last one (the field's value there is
+    // far from any surface the pipeline meshes: grids are padded).
+    for (int s = 0; s < 4; ++s) index[a][s] = std::clamp(c - 1 + s, 0, grid.dims[a] - 1);
+  }
+  double value = 0.0;
+  Vec3 g = Vec3::Zero();
+  for (int k = 0; k < 4; ++k)
+    for (int j = 0; j < 4; ++j) {
+      double row = 0.0, row_dx = 0.0;
+      for (int i = 0; i < 4; ++i) {
+        const double v = grid.at(index[0][i], index[1][j], index[2][k]);
+        row += w[0][i] * v;
+        row_dx += dw[0][i] * v;
+      }
+      value += w[1][j] * w[2][k] * row;
+      g[0] += w[1][j] * w[2][k] * row_dx;
+      g[1] += dw[1][j] * w[2][k] * row;
+      g[2] += w[1][j] * dw[2][k] * row;
+    }
+  if (gradient) *gradient = g.cwiseQuotient(grid.spacing);
+  return value;
+}
+
 Vec3 newton_to_level(const ScalarField& field, double level, const Vec3& p, double max_step,
                      double tolerance, int max_iterations) {
   Vec3 x = p;
@@ -53,7 +106,7 @@ Vec3 newton_to_level(const ScalarField& field, double level, const Vec3& p, doub
 
 Vec3 project_to_level(const Grid& grid, double level, const Vec3& p) {
   const double cell = grid.spacing.minCoeff();
-  return newton_to_level([&grid](const Vec3& x, Vec3* g) { return trilinear_value(grid, x, g); },
+  return newton_to_level([&grid](const Vec3& x, Vec3* g) { return tricubic_value(grid, x, g); },
                          level, p, cell, 1e-9 * cell);
 }
 

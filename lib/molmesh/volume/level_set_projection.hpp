@@ -1,7 +1,7 @@
 #pragma once
 // Moving points back onto a level set of a sampled field: Newton steps along the gradient of
-// the trilinear interpolant. Processing uses it (ProcessingOptions::project) to keep vertices
-// on the distance-field surfaces while it relocates and smooths them.
+// its tricubic (Catmull-Rom) interpolant. Processing uses it (ProcessingOptions::project) to keep
+// vertices on the distance-field surfaces while it relocates and smooths them.
 #include <functional>
 #include <memory>
 
@@ -23,7 +23,11 @@ Vec3 newton_to_level(const ScalarField& field, double level, const Vec3& p, doub
 // Trilinear value and gradient at p (clamped to the grid).
 double trilinear_value(const Grid& grid, const Vec3& p, Vec3* gradient = nullptr);
 
-// newton_to_level on the trilinear interpolant: steps of at most one cell, to 1e-9 cell.
+// Tricubic (Catmull-Rom) value and gradient at p: C1, exact for quadratics (clamped to the
+// grid; the trilinear value on a grid with fewer than 4 samples along an axis).
+double tricubic_value(const Grid& grid, const Vec3& p, Vec3* gradient = nullptr);
+
+// newton_to_level on the tricubic interpolant: steps of at most one cell, to 1e-9 cell.
 Vec3 project_to_level(const Grid& grid, double level, const Vec3& p);
 
 // project_to_level bound to a grid it keeps alive.
